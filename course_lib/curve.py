@@ -1,0 +1,398 @@
+"""The course's one curve type: a piecewise Bézier curve with an optional knot sequence.
+
+Every construction of the course (stitching, Catmull-Rom, Beta-splines, Finn's
+knot-based G1 splines, ...) returns a :class:`PiecewiseBezier`; every analysis,
+plot and widget consumes one.  Data flows one way::
+
+    construct  ->  PiecewiseBezier  ->  evaluate / analyse  ->  plot
+
+Parametrization
+---------------
+Segment ``i`` is a Bézier curve ``q_i(u)``, ``u`` in ``[0, 1]`` (its *local*
+parameter), of any degree ``>= 1``.  A knot sequence ``t_0 < t_1 < ... < t_S``
+(``S`` segments) gives a *global* parameter ``t`` in ``[t_0, t_S]``: on
+``[t_i, t_{i+1}]`` the curve is ``q_i((t - t_i) / (t_{i+1} - t_i))`` (seed 004,
+§19.7).  Without knots the curve uses ``t_i = i``.  Derivatives in the global
+parameter carry the chain-rule factor ``(t_{i+1} - t_i)^{-n}``.
+
+Lesson: ``notebooks/01_reparametrization.ipynb`` (piecewise curves and joints),
+``notebooks/03_g1_knot_bezier_splines.ipynb`` (the global parameter).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from types import MappingProxyType
+
+import numpy as np
+
+from ._validation import as_parameter_array, as_points, check_integer, check_knots
+from .bezier import _bernstein, _derivative_points, _end_derivatives
+
+__all__ = ["PiecewiseBezier"]
+
+
+def _readonly(a: np.ndarray) -> np.ndarray:
+    a = np.array(a, dtype=float)
+    a.setflags(write=False)
+    return a
+
+
+class PiecewiseBezier:
+    """A curve made of Bézier segments, optionally parametrized by a knot sequence.
+
+    Parameters
+    ----------
+    segments : sequence of array_like, each of shape (d_i + 1, dim)
+        The Bézier control polygon of each segment, in order.  Degrees may differ
+        from segment to segment (``d_i >= 1``); all segments share ``dim`` (2 or 3).
+        Consecutive segments are *not* required to meet: a gap is a fact the
+        continuity analysis reports, not an input error.
+    knots : array_like of shape (len(segments) + 1,), optional
+        Strictly increasing global parameter values of the segment ends.  Default:
+        ``0, 1, ..., len(segments)``.
+    info : mapping, optional
+        Read-only facts about how the curve was built (shape parameters per joint,
+        construction points such as Farin-Boehm's ``T``), for plots and reports.
+
+    Raises
+    ------
+    ValueError
+        If there is no segment, a segment has fewer than 2 control points, points
+        are not finite, dimensions differ, or knots are not strictly increasing.
+    TypeError
+        If a segment is not an array of real numbers.
+
+    Examples
+    --------
+    Two quadratic segments meeting at (2, 0):
+
+    >>> c = PiecewiseBezier([[[0, 0], [1, 1], [2, 0]], [[2, 0], [3, -1], [4, 0]]])
+    >>> c.n_segments, c.degrees, c.domain
+    (2, (2, 2), (0.0, 2.0))
+    >>> c.evaluate(1.0)
+    array([2., 0.])
+    """
+
+    __slots__ = ("_cache", "_info", "_knots", "_segments", "has_knots")
+
+    def __init__(
+        self,
+        segments: Sequence[np.ndarray],
+        knots: Sequence[float] | np.ndarray | None = None,
+        *,
+        info: Mapping[str, object] | None = None,
+    ) -> None:
+        if isinstance(segments, np.ndarray) and segments.ndim == 2:
+            raise ValueError(
+                "segments must be a sequence of control polygons; to build a curve from one "
+                "polygon use PiecewiseBezier([points]) or PiecewiseBezier.from_control_points"
+            )
+        try:
+            seg_list = list(segments)
+        except TypeError:
+            raise TypeError(
+                f"segments must be a sequence of control polygons, got {type(segments).__name__}"
+            ) from None
+        if not seg_list:
+            raise ValueError("segments must contain at least one Bézier segment")
+        segs = [as_points(s, f"segments[{i}]", min_points=2) for i, s in enumerate(seg_list)]
+        dim = segs[0].shape[1]
+        for i, s in enumerate(segs):
+            if s.shape[1] != dim:
+                raise ValueError(
+                    f"segments[{i}] has dimension {s.shape[1]} but segments[0] has dimension {dim}; "
+                    "all segments must live in the same space"
+                )
+        has_knots = knots is not None
+        k = (
+            check_knots(knots, "knots", count=len(segs) + 1)
+            if has_knots
+            else np.arange(len(segs) + 1, dtype=float)
+        )
+        self._init(segs, k, has_knots, info)
+
+    def _init(self, segs, knots, has_knots, info) -> None:
+        self._segments = tuple(_readonly(s) for s in segs)
+        self._knots = _readonly(knots)
+        self.has_knots = bool(has_knots)
+        self._info = MappingProxyType(dict(info or {}))
+        self._cache: dict = {}
+
+    @classmethod
+    def _fast(cls, segments, knots=None, info=None) -> PiecewiseBezier:
+        """Construct without validation (internal use by trusted constructions)."""
+        obj = cls.__new__(cls)
+        has = knots is not None
+        k = np.asarray(knots, float) if has else np.arange(len(segments) + 1, dtype=float)
+        obj._init([np.asarray(s, float) for s in segments], k, has, info)
+        return obj
+
+    @classmethod
+    def from_control_points(
+        cls,
+        points: np.ndarray,
+        degree: int,
+        knots: Sequence[float] | np.ndarray | None = None,
+    ) -> PiecewiseBezier:
+        """Build a C0 composite curve from one list of points ``p_0 .. p_{dS}``.
+
+        Segment ``i`` uses ``p_{di} .. p_{d(i+1)}`` (consecutive segments share
+        their joint point), as in seed 004 §19.6.
+
+        Raises
+        ------
+        ValueError
+            If ``len(points) - 1`` is not a positive multiple of ``degree``.
+        """
+        degree = check_integer(degree, "degree", minimum=1)
+        P = as_points(points, "points", min_points=degree + 1)
+        if (P.shape[0] - 1) % degree:
+            raise ValueError(
+                f"points must have degree * n_segments + 1 rows; {P.shape[0]} points do not "
+                f"split into segments of degree {degree}"
+            )
+        S = (P.shape[0] - 1) // degree
+        return cls([P[degree * i : degree * (i + 1) + 1] for i in range(S)], knots)
+
+    # ------------------------------------------------------------------ facts
+    @property
+    def segments(self) -> tuple[np.ndarray, ...]:
+        """Control polygons, one read-only ``(d_i + 1, dim)`` array per segment."""
+        return self._segments
+
+    @property
+    def knots(self) -> np.ndarray:
+        """Global parameter values ``t_0 < ... < t_S`` of the segment ends."""
+        return self._knots
+
+    @property
+    def info(self) -> Mapping[str, object]:
+        """Read-only facts recorded by the construction that built the curve."""
+        return self._info
+
+    @property
+    def n_segments(self) -> int:
+        return len(self._segments)
+
+    @property
+    def n_joints(self) -> int:
+        """Number of interior joints (``n_segments - 1``)."""
+        return len(self._segments) - 1
+
+    @property
+    def degrees(self) -> tuple[int, ...]:
+        return tuple(s.shape[0] - 1 for s in self._segments)
+
+    @property
+    def dim(self) -> int:
+        return self._segments[0].shape[1]
+
+    @property
+    def domain(self) -> tuple[float, float]:
+        """The global parameter interval ``(t_0, t_S)``."""
+        return float(self._knots[0]), float(self._knots[-1])
+
+    @property
+    def joint_points(self) -> np.ndarray:
+        """End points ``q_i(1)`` of segments ``0 .. S-2``: the joints, shape ``(S-1, dim)``."""
+        if self.n_joints == 0:
+            return np.zeros((0, self.dim))
+        return np.array([s[-1] for s in self._segments[:-1]])
+
+    @property
+    def joint_parameters(self) -> np.ndarray:
+        """Global parameters ``t_1 .. t_{S-1}`` of the interior joints."""
+        return self._knots[1:-1].copy()
+
+    @property
+    def control_points(self) -> np.ndarray:
+        """All control points, segment after segment, a shared joint point listed once.
+
+        Where consecutive segments do not share their joint point, both are listed.
+        """
+        rows = [self._segments[0]]
+        for prev, s in zip(self._segments[:-1], self._segments[1:], strict=True):
+            rows.append(s[1:] if np.array_equal(prev[-1], s[0]) else s)
+        return np.vstack(rows)
+
+    def __len__(self) -> int:
+        return self.n_segments
+
+    def __repr__(self) -> str:
+        deg = set(self.degrees)
+        d = deg.pop() if len(deg) == 1 else sorted(set(self.degrees))
+        kn = f", knots={np.array2string(self._knots, precision=4)}" if self.has_knots else ""
+        return f"PiecewiseBezier({self.n_segments} segments, degree {d}, dim {self.dim}{kn})"
+
+    # ------------------------------------------------------------ evaluation
+    def _check_segment(self, i: int) -> int:
+        i = check_integer(i, "segment", minimum=0)
+        if i >= self.n_segments:
+            raise ValueError(f"segment must be < n_segments = {self.n_segments}; got {i}")
+        return i
+
+    def evaluate_segment(self, i: int, u: float | np.ndarray, n: int = 0) -> np.ndarray:
+        """n-th derivative of segment ``i`` with respect to its *local* parameter ``u``.
+
+        Parameters
+        ----------
+        i : int
+            Segment index.
+        u : float or array_like of shape (m,)
+            Local parameters, normally in ``[0, 1]``.
+        n : int
+            Derivative order.
+
+        Returns
+        -------
+        ndarray of shape (dim,) or (m, dim)
+        """
+        i = self._check_segment(i)
+        n = check_integer(n, "n", minimum=0)
+        uu, scalar = as_parameter_array(u, "u")
+        Q = _derivative_points(self._segments[i], n)
+        out = _bernstein(Q.shape[0] - 1, uu) @ Q
+        return out[0] if scalar else out
+
+    def end_derivatives(self, i: int, end: int, n: int) -> np.ndarray:
+        """Local derivatives of orders ``0..n`` of segment ``i`` at ``u = end`` (0 or 1).
+
+        Returns
+        -------
+        ndarray of shape (n + 1, dim)
+            Seed 000 eq. (8.1)-(8.3) and their higher-order analogues.
+        """
+        i = self._check_segment(i)
+        n = check_integer(n, "n", minimum=0)
+        if end not in (0, 1):
+            raise ValueError(f"end must be 0 (u = 0) or 1 (u = 1); got {end!r}")
+        return _end_derivatives(self._segments[i], n, end)
+
+    def _stacks(self, n: int):
+        """Per degree: (segment -> row map, stacked n-th hodograph points)."""
+        key = ("stack", n)
+        if key not in self._cache:
+            groups: dict[int, list[int]] = {}
+            for i, d in enumerate(self.degrees):
+                groups.setdefault(d, []).append(i)
+            out = []
+            for d, idx in groups.items():
+                rows = np.full(self.n_segments, -1)
+                rows[idx] = np.arange(len(idx))
+                stack = np.stack([_derivative_points(self._segments[i], n) for i in idx])
+                out.append((d, np.array(idx), rows, stack))
+            self._cache[key] = out
+        return self._cache[key]
+
+    def locate(self, t: float | np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Segment index and local parameter of global parameters ``t``.
+
+        A joint parameter ``t_i`` belongs to the segment that *starts* there
+        (except ``t_S``, which belongs to the last segment).
+
+        Raises
+        ------
+        ValueError
+            If some ``t`` lies outside the domain ``[t_0, t_S]``.
+        """
+        tt, _ = as_parameter_array(t, "t")
+        return self._locate(tt)
+
+    def _locate(self, tt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        k = self._knots
+        span = k[-1] - k[0]
+        tol = 1e-12 * max(1.0, abs(k[0]), abs(k[-1]), span)
+        if tt.size and (tt.min() < k[0] - tol or tt.max() > k[-1] + tol):
+            bad = tt[(tt < k[0] - tol) | (tt > k[-1] + tol)][0]
+            raise ValueError(f"t must lie in the domain [{k[0]}, {k[-1]}]; got {bad}")
+        idx = np.clip(np.searchsorted(k, tt, side="right") - 1, 0, self.n_segments - 1)
+        u = (tt - k[idx]) / (k[idx + 1] - k[idx])
+        return idx, np.clip(u, 0.0, 1.0)
+
+    def evaluate(self, t: float | np.ndarray, n: int = 0) -> np.ndarray:
+        """Points (``n = 0``) or n-th derivatives in the *global* parameter ``t``.
+
+        Vectorized: segments are grouped by degree and evaluated with one
+        Bernstein matrix each, no per-point Python loop.
+
+        Parameters
+        ----------
+        t : float or array_like of shape (m,)
+            Global parameters in ``[t_0, t_S]``.
+        n : int
+            Derivative order with respect to ``t``: the local derivative times
+            ``(t_{i+1} - t_i)^{-n}``.
+
+        Returns
+        -------
+        ndarray of shape (dim,) or (m, dim)
+        """
+        n = check_integer(n, "n", minimum=0)
+        tt, scalar = as_parameter_array(t, "t")
+        idx, u = self._locate(tt)
+        out = self._eval_located(idx, u, n)
+        if n:
+            h = np.diff(self._knots)
+            out *= (h[idx] ** -float(n))[:, None]
+        return out[0] if scalar else out
+
+    def _eval_located(self, idx: np.ndarray, u: np.ndarray, n: int) -> np.ndarray:
+        stacks = self._stacks(n)
+        if len(stacks) == 1:
+            _, _, rows, stack = stacks[0]
+            B = _bernstein(stack.shape[1] - 1, u)
+            return np.einsum("mk,mkd->md", B, stack[rows[idx]])
+        out = np.empty((u.size, self.dim))
+        for _, _, rows, stack in stacks:
+            r = rows[idx]
+            mask = r >= 0
+            B = _bernstein(stack.shape[1] - 1, u[mask])
+            out[mask] = np.einsum("mk,mkd->md", B, stack[r[mask]])
+        return out
+
+    def sample(self, per_segment: int = 64) -> tuple[np.ndarray, np.ndarray]:
+        """Global parameters and points for drawing: ``per_segment`` samples per segment.
+
+        Joints are included once each; the result runs from ``t_0`` to ``t_S``.
+
+        Returns
+        -------
+        t : ndarray of shape (m,)
+        points : ndarray of shape (m, dim)
+        """
+        per_segment = check_integer(per_segment, "per_segment", minimum=2)
+        t = self.parameter_grid(per_segment)
+        return t, self.evaluate(t)
+
+    def parameter_grid(self, per_segment: int = 64) -> np.ndarray:
+        """Global parameters, ``per_segment`` equally spaced per segment, joints once."""
+        per_segment = check_integer(per_segment, "per_segment", minimum=2)
+        k = self._knots
+        s = np.linspace(0.0, 1.0, per_segment)[:-1]
+        t = (k[:-1, None] + np.diff(k)[:, None] * s[None, :]).ravel()
+        return np.append(t, k[-1])
+
+    # -------------------------------------------------------------- new curves
+    def with_knots(self, knots: Sequence[float] | np.ndarray) -> PiecewiseBezier:
+        """The same segments with a new knot sequence (a new global parametrization)."""
+        return PiecewiseBezier(self._segments, knots, info=self._info)
+
+    def transformed(self, matrix: np.ndarray, offset: np.ndarray | None = None) -> PiecewiseBezier:
+        """The affine image ``x -> matrix @ x + offset`` (control points mapped the same way).
+
+        Bézier curves are affinely invariant, so this is the exact image curve.
+        """
+        A = np.asarray(matrix, dtype=float)
+        if A.shape != (self.dim, self.dim) or not np.all(np.isfinite(A)):
+            raise ValueError(f"matrix must be a finite ({self.dim}, {self.dim}) array; got shape {A.shape}")
+        b = np.zeros(self.dim) if offset is None else np.asarray(offset, dtype=float)
+        if b.shape != (self.dim,) or not np.all(np.isfinite(b)):
+            raise ValueError(f"offset must be a finite vector of length {self.dim}; got shape {b.shape}")
+        segs = [s @ A.T + b for s in self._segments]
+        return PiecewiseBezier._fast(segs, self._knots if self.has_knots else None, self._info)
+
+    def segment_curve(self, i: int) -> PiecewiseBezier:
+        """Segment ``i`` alone, as a one-segment curve."""
+        i = self._check_segment(i)
+        return PiecewiseBezier._fast([self._segments[i]])
