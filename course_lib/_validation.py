@@ -53,12 +53,16 @@ def as_points(
         )
     if arr.shape[1] not in dims:
         allowed = " or ".join(str(d) for d in dims)
-        raise ValueError(f"{name} must hold points of dimension {allowed}; got dimension {arr.shape[1]}")
+        raise ValueError(
+            f"{name} must hold points of dimension {allowed}; got dimension {arr.shape[1]}"
+        )
     if arr.shape[0] < min_points:
         raise ValueError(f"{name} must have at least {min_points} points; got {arr.shape[0]}")
     if not np.all(np.isfinite(arr)):
         bad = int(np.argwhere(~np.isfinite(arr))[0, 0])
-        raise ValueError(f"{name} must contain only finite values; point {bad} is {arr[bad].tolist()}")
+        raise ValueError(
+            f"{name} must contain only finite values; point {bad} is {arr[bad].tolist()}"
+        )
     return arr
 
 
@@ -73,7 +77,9 @@ def as_parameter_array(value: object, name: str) -> tuple[np.ndarray, bool]:
         If it is more than one-dimensional or not finite.
     """
     if isinstance(value, (str, bytes)) or value is None:
-        raise TypeError(f"{name} must be a real number or an array of them, got {type(value).__name__}")
+        raise TypeError(
+            f"{name} must be a real number or an array of them, got {type(value).__name__}"
+        )
     try:
         arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError) as exc:
@@ -130,7 +136,9 @@ def check_knots(value: object, name: str = "knots", *, count: int | None = None)
     if scalar:
         raise ValueError(f"{name} must be a 1-d sequence of numbers, got a scalar")
     if count is not None and arr.size != count:
-        raise ValueError(f"{name} must have {count} values (one more than the segments); got {arr.size}")
+        raise ValueError(
+            f"{name} must have {count} values (one more than the segments); got {arr.size}"
+        )
     if arr.size < 2:
         raise ValueError(f"{name} must have at least 2 values; got {arr.size}")
     steps = np.diff(arr)
@@ -169,7 +177,9 @@ def check_shape_parameters(
     if scalar:
         arr = np.full(count, arr[0])
     elif arr.size != count:
-        raise ValueError(f"{name} must be a scalar or have one value per joint ({count}); got {arr.size}")
+        raise ValueError(
+            f"{name} must be a scalar or have one value per joint ({count}); got {arr.size}"
+        )
     if positive and np.any(arr <= 0):
         j = int(np.argmax(arr <= 0))
         raise ValueError(f"{name} must be > 0 at every joint; at joint {j} it is {arr[j]}")

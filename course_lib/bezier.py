@@ -38,19 +38,29 @@ def _binomials(d: int) -> np.ndarray:
 
 
 def _bernstein(d: int, u: np.ndarray) -> np.ndarray:
-    """Bernstein values without checks; ``u`` 1-d, returns ``(len(u), d + 1)``."""
+    """Bernstein values without checks; ``u`` 1-d, returns ``(len(u), d + 1)``.
+
+    The result is a transposed view of a ``(d + 1, len(u))`` array: each basis
+    function is built in one contiguous row, which is several times faster than
+    filling strided columns for long ``u``.
+    """
     if d == 0:
         return np.ones((u.size, 1))
     # Powers by cumulative products: no pow() calls, exact at u = 0 and u = 1.
-    up = np.empty((u.size, d + 1))
-    vp = np.empty((u.size, d + 1))
-    up[:, 0] = 1.0
-    vp[:, 0] = 1.0
-    w = 1.0 - u
+    # Row i ends as (comb(d, i) * u**i) * (1 - u)**(d - i), the same products in the
+    # same order as the textbook formula.
+    out = np.empty((d + 1, u.size))
+    out[0] = 1.0
     for k in range(1, d + 1):
-        up[:, k] = up[:, k - 1] * u
-        vp[:, k] = vp[:, k - 1] * w
-    return _binomials(d) * up * vp[:, ::-1]
+        np.multiply(out[k - 1], u, out=out[k])
+    out *= _binomials(d)[:, None]
+    w = 1.0 - u
+    vp = w.copy()
+    for k in range(d - 1, -1, -1):
+        out[k] *= vp
+        if k:
+            vp *= w
+    return out.T
 
 
 def bernstein(d: int, u: float | np.ndarray) -> np.ndarray:
@@ -75,7 +85,7 @@ def bernstein(d: int, u: float | np.ndarray) -> np.ndarray:
     """
     d = check_integer(d, "d", minimum=0)
     uu, scalar = as_parameter_array(u, "u")
-    out = _bernstein(d, uu)
+    out = np.ascontiguousarray(_bernstein(d, uu))
     return out[0] if scalar else out
 
 

@@ -21,7 +21,9 @@ Lesson: ``notebooks/01_reparametrization.ipynb`` (piecewise curves and joints),
 
 from __future__ import annotations
 
+from bisect import bisect_right
 from collections.abc import Mapping, Sequence
+from math import comb
 from types import MappingProxyType
 
 import numpy as np
@@ -30,6 +32,36 @@ from ._validation import as_parameter_array, as_points, check_integer, check_kno
 from .bezier import _bernstein, _derivative_points, _end_derivatives
 
 __all__ = ["PiecewiseBezier"]
+
+# Hodographs of degree up to this are evaluated from the two-sided Taylor form
+# (PiecewiseBezier._taylor); above it, from the Bernstein form (stable for any degree).
+_TAYLOR_MAX_DEGREE = 8
+# Parameters are evaluated in chunks of this many so the temporaries stay in cache.
+_CHUNK = 1 << 15
+
+
+def _horner_chunk(t: np.ndarray, table: np.ndarray, halves: tuple, out: np.ndarray) -> None:
+    """Evaluate the two-sided Taylor form at in-domain parameters ``t`` into ``out``."""
+    bp, anchor, hh, unit = halves
+    last = anchor.size - 1
+    if unit:
+        # Knots 0, 1, ..., S and t >= 0: the half-segment index is floor(2 t), exactly,
+        # and t - anchor is exact (Sterbenz), so no search and no division.
+        j = (t * 2.0).astype(np.intp)
+        np.minimum(j, last, out=j)
+        w = t - anchor.take(j)
+    else:
+        j = np.searchsorted(bp, t, side="right")
+        j -= 1
+        np.clip(j, 0, last, out=j)
+        w = t - anchor.take(j)
+        w /= hh.take(j)
+    top = table.shape[0] - 1
+    np.take(table[top], j, axis=0, out=out)
+    w = w[:, None]
+    for k in range(top - 1, -1, -1):
+        out *= w
+        out += table[k].take(j, axis=0)
 
 
 def _readonly(a: np.ndarray) -> np.ndarray:
@@ -101,8 +133,8 @@ class PiecewiseBezier:
         for i, s in enumerate(segs):
             if s.shape[1] != dim:
                 raise ValueError(
-                    f"segments[{i}] has dimension {s.shape[1]} but segments[0] has dimension {dim}; "
-                    "all segments must live in the same space"
+                    f"segments[{i}] has dimension {s.shape[1]} but segments[0] has dimension "
+                    f"{dim}; all segments must live in the same space"
                 )
         has_knots = knots is not None
         k = (
@@ -299,13 +331,25 @@ class PiecewiseBezier:
         tt, _ = as_parameter_array(t, "t")
         return self._locate(tt)
 
-    def _locate(self, tt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    def _check_domain(self, tt: np.ndarray) -> bool:
+        """Raise if some ``t`` is outside the domain; True if some lie just outside (within
+        the rounding tolerance) and must be clipped onto it."""
         k = self._knots
+        if not tt.size:
+            return False
+        lo, hi = tt.min(), tt.max()
+        if lo >= k[0] and hi <= k[-1]:
+            return False
         span = k[-1] - k[0]
         tol = 1e-12 * max(1.0, abs(k[0]), abs(k[-1]), span)
-        if tt.size and (tt.min() < k[0] - tol or tt.max() > k[-1] + tol):
+        if lo < k[0] - tol or hi > k[-1] + tol:
             bad = tt[(tt < k[0] - tol) | (tt > k[-1] + tol)][0]
             raise ValueError(f"t must lie in the domain [{k[0]}, {k[-1]}]; got {bad}")
+        return True
+
+    def _locate(self, tt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        k = self._knots
+        self._check_domain(tt)
         idx = np.clip(np.searchsorted(k, tt, side="right") - 1, 0, self.n_segments - 1)
         u = (tt - k[idx]) / (k[idx + 1] - k[idx])
         return idx, np.clip(u, 0.0, 1.0)
@@ -313,8 +357,10 @@ class PiecewiseBezier:
     def evaluate(self, t: float | np.ndarray, n: int = 0) -> np.ndarray:
         """Points (``n = 0``) or n-th derivatives in the *global* parameter ``t``.
 
-        Vectorized: segments are grouped by degree and evaluated with one
-        Bernstein matrix each, no per-point Python loop.
+        Vectorized, no per-point Python loop: each segment's n-th derivative is
+        evaluated from a cached two-sided Taylor form (Horner's rule on
+        ``|w| <= 1/2``, see :meth:`_taylor`), or, for hodographs of degree above
+        ``_TAYLOR_MAX_DEGREE``, from the Bernstein form grouped by degree.
 
         Parameters
         ----------
@@ -330,12 +376,107 @@ class PiecewiseBezier:
         """
         n = check_integer(n, "n", minimum=0)
         tt, scalar = as_parameter_array(t, "t")
-        idx, u = self._locate(tt)
-        out = self._eval_located(idx, u, n)
-        if n:
-            h = np.diff(self._knots)
-            out *= (h[idx] ** -float(n))[:, None]
+        table = self._taylor(n)
+        if table is None:
+            idx, u = self._locate(tt)
+            out = self._eval_located(idx, u, n)
+            if n:
+                h = np.diff(self._knots)
+                out *= (h[idx] ** -float(n))[:, None]
+        elif tt.size == 1:
+            out = self._horner_one(float(tt[0]), n)[None, :]
+        else:
+            if self._check_domain(tt):
+                tt = np.clip(tt, self._knots[0], self._knots[-1])
+            out = np.empty((tt.size, self.dim))
+            halves = self._halves()
+            for s in range(0, tt.size, _CHUNK):
+                _horner_chunk(tt[s : s + _CHUNK], table, halves, out[s : s + _CHUNK])
         return out[0] if scalar else out
+
+    def _taylor(self, n: int) -> np.ndarray | None:
+        """Two-sided Taylor coefficients of the n-th global derivative, or None.
+
+        Segment ``i`` is split at ``u = 1/2``.  With ``Q`` the control points of its
+        n-th hodograph (degree ``e``), the left half is expanded at ``u = 0`` and
+        the right half at ``u = 1``:
+
+        .. math:: q^{(n)}(u) = \\sum_k \\binom{e}{k} \\Delta^k Q_0\\, u^k
+                 = \\sum_k \\binom{e}{k} \\Delta^k Q_{e-k}\\, (u - 1)^k,
+
+        the Taylor coefficients being the end derivatives of seed 000
+        eq. (8.1)-(8.3) divided by ``k!``.  Row ``2 i`` (left) and ``2 i + 1``
+        (right) of ``table[k]`` hold the coefficients of ``w^k`` times
+        ``h_i^{-n}`` (the chain rule), zero-padded to the largest degree.  Horner's
+        rule with ``|w| <= 1/2`` loses at most about ``2^e`` ulps of ``max |Q|``
+        (tests/unit/test_curve_fast_paths.py), and the segment ends ``w = 0`` are
+        exact.  ``None`` when some ``e`` exceeds ``_TAYLOR_MAX_DEGREE``.
+        """
+        key = ("taylor", n)
+        if key not in self._cache:
+            hod = [_derivative_points(s, n) for s in self._segments]
+            top = max(q.shape[0] - 1 for q in hod)
+            if top > _TAYLOR_MAX_DEGREE:
+                self._cache[key] = None
+            else:
+                h = np.diff(self._knots)
+                table = np.zeros((top + 1, 2 * len(hod), self.dim))
+                for i, Q in enumerate(hod):
+                    e = Q.shape[0] - 1
+                    scale = h[i] ** -float(n) if n else 1.0
+                    diff = Q
+                    for k in range(e + 1):
+                        c = comb(e, k) * scale
+                        table[k, 2 * i] = c * diff[0]
+                        table[k, 2 * i + 1] = c * diff[-1]
+                        diff = np.diff(diff, axis=0)
+                table.setflags(write=False)
+                self._cache[key] = table
+        return self._cache[key]
+
+    def _horner_one(self, x: float, n: int) -> np.ndarray:
+        """One parameter: the same arithmetic as :func:`_horner_chunk` on Python floats
+        (same operations in the same order, so the same bits), without array overhead."""
+        key = ("taylor-lists", n)
+        if key not in self._cache:
+            bp, anchor, hh, unit = self._halves()
+            rows = [[tuple(p) for p in level] for level in self._taylor(n).tolist()]
+            self._cache[key] = (bp.tolist(), anchor.tolist(), hh.tolist(), unit, rows)
+        bp, anchor, hh, unit, rows = self._cache[key]
+        if not bp[0] <= x <= bp[-1]:
+            self._check_domain(np.array([x]))  # raises unless within rounding tolerance
+            x = min(max(x, bp[0]), bp[-1])
+        last = len(anchor) - 1
+        if unit:
+            j = min(int(2.0 * x), last)
+            w = x - anchor[j]
+        else:
+            j = min(max(bisect_right(bp, x) - 1, 0), last)
+            w = (x - anchor[j]) / hh[j]
+        acc = rows[-1][j]
+        for level in reversed(rows[:-1]):
+            acc = [a * w + c for a, c in zip(acc, level[j], strict=True)]
+        return np.array(acc, dtype=float)
+
+    def _halves(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, bool]:
+        """Half-segment breakpoints, anchors (the expansion points) and lengths.
+
+        Half ``j`` of segment ``i = j // 2`` is ``[t_i, m_i]`` (``j`` even, anchor
+        ``t_i``) or ``[m_i, t_{i+1}]`` (``j`` odd, anchor ``t_{i+1}``), ``m_i`` the
+        midpoint; the last flag is True for the default knots ``0, 1, ..., S``.
+        """
+        if "halves" not in self._cache:
+            k = self._knots
+            S = self.n_segments
+            bp = np.empty(2 * S + 1)
+            bp[0::2] = k
+            bp[1::2] = 0.5 * (k[:-1] + k[1:])
+            anchor = np.empty(2 * S)
+            anchor[0::2] = k[:-1]
+            anchor[1::2] = k[1:]
+            unit = bool(np.array_equal(k, np.arange(S + 1, dtype=float)))
+            self._cache["halves"] = (bp, anchor, np.repeat(np.diff(k), 2), unit)
+        return self._cache["halves"]
 
     def _eval_located(self, idx: np.ndarray, u: np.ndarray, n: int) -> np.ndarray:
         stacks = self._stacks(n)
@@ -385,10 +526,14 @@ class PiecewiseBezier:
         """
         A = np.asarray(matrix, dtype=float)
         if A.shape != (self.dim, self.dim) or not np.all(np.isfinite(A)):
-            raise ValueError(f"matrix must be a finite ({self.dim}, {self.dim}) array; got shape {A.shape}")
+            raise ValueError(
+                f"matrix must be a finite ({self.dim}, {self.dim}) array; got shape {A.shape}"
+            )
         b = np.zeros(self.dim) if offset is None else np.asarray(offset, dtype=float)
         if b.shape != (self.dim,) or not np.all(np.isfinite(b)):
-            raise ValueError(f"offset must be a finite vector of length {self.dim}; got shape {b.shape}")
+            raise ValueError(
+                f"offset must be a finite vector of length {self.dim}; got shape {b.shape}"
+            )
         segs = [s @ A.T + b for s in self._segments]
         return PiecewiseBezier._fast(segs, self._knots if self.has_knots else None, self._info)
 

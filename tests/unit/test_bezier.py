@@ -56,8 +56,13 @@ def test_derivatives_match_sympy():
     sp = pytest.importorskip("sympy")
     u = sp.symbols("u")
     d = V.shape[0] - 1
-    poly = [sum(comb(d, i) * u**i * (1 - u) ** (d - i) * sp.Rational(V[i, c]).limit_denominator()
-                for i in range(d + 1)) for c in range(2)]
+    poly = [
+        sum(
+            comb(d, i) * u**i * (1 - u) ** (d - i) * sp.Rational(V[i, c]).limit_denominator()
+            for i in range(d + 1)
+        )
+        for c in range(2)
+    ]
     for n in range(0, 5):
         for x in (0, sp.Rational(3, 8), 1):
             expected = [float(sp.diff(p, u, n).subs(u, x)) for p in poly]
@@ -118,7 +123,11 @@ def test_subdivision_reparametrizes_the_two_halves(split):
     ("call", "exc", "match"),
     [
         (lambda: bezier.evaluate([[0, 0]], 0.5), ValueError, "at least 2 points"),
-        (lambda: bezier.evaluate([[0, 0, 0, 0], [1, 1, 1, 1]], 0.5), ValueError, "dimension 2 or 3"),
+        (
+            lambda: bezier.evaluate([[0, 0, 0, 0], [1, 1, 1, 1]], 0.5),
+            ValueError,
+            "dimension 2 or 3",
+        ),
         (lambda: bezier.evaluate([[0, np.nan], [1, 1]], 0.5), ValueError, "finite"),
         (lambda: bezier.evaluate([0, 1, 2], 0.5), ValueError, "shape"),
         (lambda: bezier.evaluate("abc", 0.5), TypeError, "control_points"),

@@ -106,7 +106,10 @@ def test_from_control_points_and_with_knots():
 
 @settings(max_examples=40, deadline=None)
 @given(
-    a=st.floats(-3, 3), b=st.floats(-3, 3), c_=st.floats(-3, 3), d=st.floats(-3, 3),
+    a=st.floats(-3, 3),
+    b=st.floats(-3, 3),
+    c_=st.floats(-3, 3),
+    d=st.floats(-3, 3),
     off=st.tuples(st.floats(-5, 5), st.floats(-5, 5)),
 )
 def test_affine_invariance(a, b, c_, d, off):

@@ -3,8 +3,9 @@
 from __future__ import annotations
 
 import re
-import tomllib
 from pathlib import Path
+
+import tomllib
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -68,4 +69,6 @@ def test_pinned_versions_agree_with_constraints():
     assert set(pins) <= set(pyproject_requirements()), "constraints.txt pins a package nobody needs"
     for name, version in conda.items():
         if name in pins:
-            assert version == pins[name], f"{name}: environment.yml {version} vs constraints {pins[name]}"
+            assert version == pins[name], (
+                f"{name}: environment.yml {version} vs constraints {pins[name]}"
+            )

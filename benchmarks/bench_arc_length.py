@@ -1,0 +1,90 @@
+"""Item 2: arc length to 1e-12.
+
+``course_lib.differential_geometry.arc_length`` against ``scipy.integrate.quad`` on
+the speed function (``epsabs=0, epsrel=1e-12, limit=200``; the speed is a plain
+Python function of the hodograph polynomial, the fastest integrand a user would
+write).  Both errors are measured against mpmath's tanh-sinh quadrature at 40
+significant digits on the exact polynomial speed (the control points are exact
+binary fractions, so the mpmath integrand is the curve itself, not a rounding of it).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from bench_common import Result, Sizes, median_time
+
+GOAL_REL_ERROR = 1e-12
+# A cubic with an inflection and a strongly varying speed (speed ratio ~ 9 along it).
+CUBIC = np.array([[0.0, 0.0], [0.25, 2.0], [3.0, -1.5], [4.0, 1.0]])
+
+
+def hodograph_polynomials(P: np.ndarray) -> tuple[list[float], list[float]]:
+    """Power-basis coefficients (c0, c1, c2) of x'(u), y'(u) for a cubic Bézier ``P``."""
+    d = 3 * np.diff(P, axis=0)  # quadratic hodograph control points D0, D1, D2
+    c0 = d[0]
+    c1 = 2 * (d[1] - d[0])
+    c2 = d[0] - 2 * d[1] + d[2]
+    return [c0[0], c1[0], c2[0]], [c0[1], c1[1], c2[1]]
+
+
+def reference_length(P: np.ndarray, dps: int = 40) -> float:
+    """Arc length by mpmath.quad at ``dps`` digits, split at u = 1/2."""
+    import mpmath
+
+    (a0, a1, a2), (b0, b1, b2) = hodograph_polynomials(P)
+    with mpmath.workdps(dps):
+        a0, a1, a2, b0, b1, b2 = (mpmath.mpf(float(v)) for v in (a0, a1, a2, b0, b1, b2))
+
+        def speed(u):
+            return mpmath.sqrt((a0 + u * (a1 + u * a2)) ** 2 + (b0 + u * (b1 + u * b2)) ** 2)
+
+        return float(mpmath.quad(speed, [0, mpmath.mpf(1) / 2, 1]))
+
+
+def scipy_length(P: np.ndarray) -> float:
+    from scipy.integrate import quad
+
+    (a0, a1, a2), (b0, b1, b2) = (map(float, c) for c in hodograph_polynomials(P))
+
+    def speed(u: float) -> float:
+        return math.hypot(a0 + u * (a1 + u * a2), b0 + u * (b1 + u * b2))
+
+    return quad(speed, 0.0, 1.0, epsabs=0.0, epsrel=1e-12, limit=200)[0]
+
+
+def _row(name, curve, segments, arc_length, sizes, repeats, note=""):
+    exact = sum(reference_length(P) for P in segments)
+    ours_value = arc_length(curve)
+    ref_value = sum(scipy_length(P) for P in segments)
+    err_ours = abs(ours_value - exact) / exact
+    err_ref = abs(ref_value - exact) / exact
+    ours = median_time(lambda: arc_length(curve), repeats)
+    ref = median_time(lambda: sum(scipy_length(P) for P in segments), repeats)
+    return Result(
+        "2", name, ours, "scipy quad", ref, "error ≤ 1e-12", err_ours <= GOAL_REL_ERROR,
+        f"rel. error vs mpmath (40 digits): course_lib {err_ours:.1e}, quad {err_ref:.1e}{note}",
+        {"length": exact, "error_course_lib": err_ours, "error_scipy": err_ref},
+    )
+
+
+def run(sizes: Sizes) -> list[Result]:
+    try:
+        from course_lib.differential_geometry import arc_length
+    except ImportError as exc:
+        return [Result("2", "arc length of a cubic", note=f"TODO: {exc}")]
+    from bench_evaluation import build_curves
+
+    from course_lib import PiecewiseBezier
+
+    one = _row(
+        "arc length of one cubic", PiecewiseBezier([CUBIC]), [CUBIC], arc_length, sizes,
+        5 * sizes.repeats,
+    )
+    spline = build_curves()[1]
+    many = _row(
+        "arc length of the 50-segment cubic spline", spline, spline.segments, arc_length,
+        sizes, sizes.repeats, "; quad called once per segment",
+    )
+    return [one, many]

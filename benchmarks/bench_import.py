@@ -1,0 +1,89 @@
+"""Item 5: ``import course_lib`` time in a fresh interpreter, against ``import numpy``.
+
+Each run is a new interpreter started with ``-X importtime``; the time reported is
+the cumulative import time of the top-level module (``course_lib`` includes numpy,
+which it imports).  Medians over ``Sizes.import_runs`` runs.  The same fresh
+interpreter also reports which heavy packages ended up in ``sys.modules`` -- there
+must be none (the real check is tests/unit/test_import_light.py).
+"""
+
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+
+import numpy as np
+from bench_common import REPO, Result, Sizes
+
+GOAL_SECONDS = 0.150
+HEAVY = ("sympy", "matplotlib", "ipywidgets", "scipy")
+MATH_SUBMODULES = (
+    "bezier", "curve", "differential_geometry", "reparametrization", "beta_constraints",
+    "continuity", "stitching", "catmull_rom", "beta_splines", "knot_splines", "higher_order",
+    "surfaces",
+)
+
+
+def existing_math_submodules() -> list[str]:
+    return [m for m in MATH_SUBMODULES if (REPO / "course_lib" / f"{m}.py").exists()]
+
+
+def _importtime(statement: str, prefix: str) -> float:
+    """Import time (s) of the top-level imports named ``prefix`` or ``prefix.*``.
+
+    Runs ``statement`` in a fresh interpreter with ``-X importtime`` and sums the
+    cumulative times of the matching top-level entries (nested imports such as numpy
+    inside course_lib are included in their parent's cumulative time).
+    """
+    proc = subprocess.run(
+        [sys.executable, "-X", "importtime", "-c", statement],
+        capture_output=True, text=True, cwd=REPO, timeout=120, check=True,
+    )
+    pattern = re.compile(r"import time:\s+\d+\s+\|\s+(\d+)\s+\|( +)(\S+)\s*$")
+    total = 0.0
+    found = False
+    for line in proc.stderr.splitlines():
+        m = pattern.match(line)
+        if not m or len(m.group(2)) != 1:  # one space: a top-level import
+            continue
+        name = m.group(3)
+        if name == prefix or name.startswith(prefix + "."):
+            total += int(m.group(1)) * 1e-6
+            found = True
+    if not found:
+        raise RuntimeError(f"no importtime line for {prefix!r}")
+    return total
+
+
+def heavy_modules_after(statement: str) -> list[str]:
+    code = f"{statement}; import sys; print(' '.join(sorted(sys.modules)))"
+    proc = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, cwd=REPO, timeout=120,
+        check=True,
+    )
+    loaded = set(proc.stdout.split())
+    return [h for h in HEAVY if h in loaded]
+
+
+def run(sizes: Sizes) -> list[Result]:
+    runs = sizes.import_runs
+    subs = existing_math_submodules()
+    everything = "import course_lib; " + "; ".join(f"import course_lib.{m}" for m in subs)
+    ours = float(np.median([_importtime("import course_lib", "course_lib") for _ in range(runs)]))
+    all_ = float(np.median([_importtime(everything, "course_lib") for _ in range(runs)]))
+    numpy = float(np.median([_importtime("import numpy", "numpy") for _ in range(runs)]))
+    heavy = heavy_modules_after(everything)
+    note = "no sympy/matplotlib/ipywidgets/scipy loaded" if not heavy else f"loads {heavy}"
+    return [
+        Result(
+            "5", "import course_lib (fresh interpreter)", ours, "import numpy", numpy,
+            "≤ 150 ms", ours <= GOAL_SECONDS,
+            f"-X importtime cumulative, median of {runs} runs; course_lib includes numpy",
+        ),
+        Result(
+            "5", f"import course_lib + {len(subs)} math submodules", all_, "import numpy", numpy,
+            "≤ 150 ms, nothing heavy", all_ <= GOAL_SECONDS and not heavy,
+            f"{note}; submodules: {', '.join(subs)}",
+        ),
+    ]

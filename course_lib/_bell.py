@@ -1,0 +1,78 @@
+"""Partial Bell polynomials, the bookkeeping of the chain rule (Faà di Bruno's formula).
+
+For ``h = g o f``::
+
+    h^{(i)} = sum_{k=1}^{i} g^{(k)}(f) * B_{i,k}(f', f'', ..., f^{(i-k+1)})
+
+where ``B_{i,k}`` are the partial (exponential) Bell polynomials, computed here by
+the recurrence ``B_{0,0} = 1`` and
+
+    B_{i,k} = sum_{j=1}^{i-k+1} binom(i-1, j-1) x_j B_{i-j,k-1}.
+
+Pure numpy/python, vectorized over any trailing shape of the ``x_j``.  Used by
+:mod:`course_lib.reparametrization` (derivatives of ``q o f``),
+:mod:`course_lib.beta_constraints` (numeric Beta-constraints, seed 000 eq. (6))
+and :mod:`course_lib.differential_geometry` (derivatives with respect to arc length).
+"""
+
+from __future__ import annotations
+
+from math import comb
+
+import numpy as np
+
+__all__ = ["bell_table", "compose_derivatives"]
+
+
+def bell_table(x: np.ndarray, n: int) -> np.ndarray:
+    """Partial Bell polynomials ``B[i, k] = B_{i,k}(x_1, ..., x_{i-k+1})``, ``0 <= k <= i <= n``.
+
+    Parameters
+    ----------
+    x : ndarray of shape (>= n, ...)
+        ``x[j - 1]`` is ``x_j`` (e.g. the j-th derivative of the inner function).
+    n : int
+
+    Returns
+    -------
+    ndarray of shape (n + 1, n + 1, ...)
+        Zero where ``k > i``.
+    """
+    x = np.asarray(x, dtype=float)
+    shape = x.shape[1:]
+    B = np.zeros((n + 1, n + 1, *shape))
+    B[0, 0] = 1.0
+    for i in range(1, n + 1):
+        for k in range(1, i + 1):
+            acc = np.zeros(shape)
+            for j in range(1, i - k + 2):
+                acc = acc + comb(i - 1, j - 1) * x[j - 1] * B[i - j, k - 1]
+            B[i, k] = acc
+    return B
+
+
+def compose_derivatives(outer: np.ndarray, inner: np.ndarray) -> np.ndarray:
+    """Derivatives of orders ``1..n`` of ``g o f`` from those of ``g`` (at ``f``) and ``f``.
+
+    Parameters
+    ----------
+    outer : ndarray of shape (n, *S, *V)
+        ``outer[k - 1] = g^{(k)}(f(t))``; ``V`` is the value shape of ``g`` (e.g. ``(dim,)``).
+    inner : ndarray of shape (n, *S)
+        ``inner[j - 1] = f^{(j)}(t)`` (scalars).
+
+    Returns
+    -------
+    ndarray of shape (n, *S, *V)
+        Row ``i - 1`` is ``(g o f)^{(i)}(t)``.
+    """
+    outer = np.asarray(outer, dtype=float)
+    inner = np.asarray(inner, dtype=float)
+    n = inner.shape[0]
+    B = bell_table(inner, n)
+    extra = outer.ndim - inner.ndim
+    out = np.zeros((n, *outer.shape[1:]))
+    for i in range(1, n + 1):
+        for k in range(1, i + 1):
+            out[i - 1] += B[i, k].reshape(B.shape[2:] + (1,) * extra) * outer[k - 1]
+    return out

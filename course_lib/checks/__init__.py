@@ -1,0 +1,203 @@
+"""Immediate feedback for the homework and the lectures' "check your understanding" cells.
+
+Students
+--------
+Every question of a homework is followed by a check cell::
+
+    check("hw02.q3", answer_q3)        # -> ✓ / ✗ / … with a message in the course's terms
+
+and the last cell checks everything at once::
+
+    check_all(globals(), "hw02")
+
+A check never raises and never shows a traceback: a placeholder (``...``) or a stub that
+raises ``NotImplementedError`` is reported as "not answered yet"; ``None``, a wrong type or
+shape, NaN, a function that raises (its exception type and message are shown) or never
+returns are each explained.  Checks test *properties* of an answer (unit length, on the
+ray, satisfies the Beta-constraint, ...) or compare with a value computed at check time
+from the question's data -- they never print the expected value.
+
+They are only feedback: the grade comes from hidden tests that are not shipped with
+``course_lib`` (see ``tools/grade.py``).
+
+Lecture notebooks ("check your understanding")
+----------------------------------------------
+Lecture cells need no registration.  For a multiple-choice or short-answer question,
+store a *hash* of the right answer in the notebook (never the answer itself)::
+
+    from course_lib.checks import answer_hash, check_choice
+    answer_hash("b", salt="lecture03.q1")          # run once, privately -> '5f1e...'
+
+    my_answer = ...                                # the student's cell
+    check_choice("lecture03.q1", my_answer, "5f1e...")
+
+Answers are compared case-, space- and order-insensitively (``"B, d"`` == ``["d", "b"]``).
+For a numeric answer use :func:`check_value`, which compares against a value the notebook
+computes (e.g. with ``course_lib``) and never prints it::
+
+    check_value("lecture02.q2", my_kappa, expected=float(kappa_at_1), rtol=1e-6)
+
+:func:`quiz` shows a question with its choices and the verdict in one call.
+
+API
+---
+``check(question_id, answer) -> Verdict``
+``check_all(namespace, homework=None) -> Report``
+``check_choice(question_id, answer, correct_hash) -> Verdict``
+``check_value(question_id, answer, expected, rtol=1e-9, atol=1e-12) -> Verdict``
+``quiz(question_id, prompt, choices, answer, correct_hash) -> Verdict``
+``answer_hash(answer, salt="") -> str``
+``Verdict`` (``passed``, ``message``, ``status``; truthy iff passed) and ``Report``
+(``all_passed``, ``verdicts``) display as coloured boxes in Jupyter.
+"""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Mapping, Sequence
+
+import numpy as np
+
+from ._core import (
+    FAIL,
+    UNANSWERED,
+    AnswerProblem,
+    Report,
+    Verdict,
+    answer_hash,
+    as_vector,
+    is_unanswered,
+    registry,
+    run_validate,
+)
+
+__all__ = [
+    "HOMEWORKS",
+    "Report",
+    "Verdict",
+    "answer_hash",
+    "check",
+    "check_all",
+    "check_choice",
+    "check_value",
+    "questions",
+    "quiz",
+]
+
+#: The homework sets whose questions are registered here (module course_lib.checks.<name>).
+HOMEWORKS = ("hw01", "hw02", "hw03", "hw04")
+
+
+def _load(homework: str) -> None:
+    if homework in HOMEWORKS:
+        importlib.import_module(f"{__name__}.{homework}")
+
+
+def questions(homework: str) -> list[str]:
+    """The question ids of ``homework`` in order (e.g. ``["hw01.q1", ...]``)."""
+    _load(homework)
+    return [q for q in registry() if q.split(".")[0] == homework]
+
+
+def check(question_id: str, answer: object) -> Verdict:
+    """Check ``answer`` to the homework question ``question_id`` (e.g. ``"hw01.q3"``).
+
+    Never raises; returns a :class:`Verdict` that shows ✓ or what is wrong.
+    """
+    if not isinstance(question_id, str):
+        return Verdict(str(question_id), False, "the question id must be a string like 'hw01.q1'.")
+    _load(question_id.split(".")[0])
+    q = registry().get(question_id)
+    if q is None:
+        known = ", ".join(HOMEWORKS)
+        return Verdict(
+            question_id, False, f"unknown question id (homework sets: {known}; ids like 'hw01.q1')."
+        )
+    return run_validate(question_id, q.validate, answer)
+
+
+def check_all(namespace: Mapping[str, object], homework: str | None = None) -> Report:
+    """Check every question of ``homework`` with the answers found in ``namespace``.
+
+    Call it as ``check_all(globals(), "hw01")``.  Without ``homework`` the notebook's
+    ``HOMEWORK`` variable is used.  An answer missing from the namespace (never run, or
+    deleted) is reported as such.
+    """
+    if homework is None:
+        homework = namespace.get("HOMEWORK") if isinstance(namespace, Mapping) else None
+    if homework not in HOMEWORKS:
+        v = Verdict(str(homework), False, f"name the homework: check_all(globals(), 'hw01'); known: {HOMEWORKS}.")
+        return Report(str(homework), (v,))
+    _load(homework)
+    verdicts = []
+    for qid in questions(homework):
+        q = registry()[qid]
+        if not isinstance(namespace, Mapping) or q.answer_name not in namespace:
+            verdicts.append(
+                Verdict(
+                    qid,
+                    False,
+                    f"`{q.answer_name}` is not defined -- run its cell (or was it deleted?).",
+                    UNANSWERED,
+                )
+            )
+            continue
+        verdicts.append(run_validate(qid, q.validate, namespace[q.answer_name]))
+    return Report(homework, tuple(verdicts))
+
+
+def check_choice(question_id: str, answer: object, correct_hash: str) -> Verdict:
+    """Compare a multiple-choice / short answer with the hash of the right one.
+
+    ``correct_hash`` is ``answer_hash(right_answer, salt=question_id)``.  Only says right or
+    wrong; the right answer is not stored anywhere in the notebook.
+    """
+    if is_unanswered(answer) or answer is None:
+        return Verdict(question_id, False, "not answered yet (replace the ... by your choice).", UNANSWERED)
+    if isinstance(answer, float) or callable(answer):
+        return Verdict(question_id, False, "give the letter(s) of your choice, e.g. 'b' or 'a, c'.", FAIL)
+    if answer_hash(answer, salt=question_id) == correct_hash:
+        return Verdict(question_id, True, "right.", "passed")
+    return Verdict(question_id, False, "not this one -- think again (re-read the statement).", FAIL)
+
+
+def check_value(
+    question_id: str,
+    answer: object,
+    expected: object,
+    *,
+    rtol: float = 1e-9,
+    atol: float = 1e-12,
+) -> Verdict:
+    """Compare a numeric answer (number or array) with ``expected``; never prints ``expected``."""
+    exp = np.asarray(expected, dtype=float)
+
+    def validate(a):
+        arr = as_vector(a, exp.shape, what="a number" if exp.ndim == 0 else "an array")
+        if np.allclose(arr, exp, rtol=rtol, atol=atol):
+            return True, "correct."
+        return False, "not the expected value -- check your computation."
+
+    return run_validate(question_id, validate, answer)
+
+
+def quiz(
+    question_id: str,
+    prompt: str,
+    choices: Sequence[str] | Mapping[str, str],
+    answer: object,
+    correct_hash: str,
+) -> Verdict:
+    """Show a multiple-choice question and the verdict on ``answer`` in one output.
+
+    ``choices`` is a list (lettered a, b, c, ...) or a mapping letter -> text.
+    """
+    if not isinstance(choices, Mapping):
+        choices = {chr(ord("a") + i): c for i, c in enumerate(choices)}
+    lines = "; ".join(f"({k}) {v}" for k, v in choices.items())
+    v = check_choice(question_id, answer, correct_hash)
+    return Verdict(v.question, v.passed, f"{prompt} {lines} -- {v.message}", v.status)
+
+
+# keep these importable for the per-homework modules and tests
+_ = (AnswerProblem, FAIL, UNANSWERED)

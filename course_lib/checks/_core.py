@@ -1,0 +1,363 @@
+"""The machinery behind :mod:`course_lib.checks`: verdicts, the registry, safe answer handling.
+
+Everything here turns a student's answer -- whatever it is -- into a :class:`Verdict`.
+Nothing in this module ever lets an exception escape to the notebook: a check that
+meets an answer it cannot read says so in words.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import html
+import math
+import signal
+import threading
+from collections.abc import Callable, Mapping
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+from numbers import Real
+
+import numpy as np
+
+__all__ = [
+    "AnswerProblem",
+    "Question",
+    "Report",
+    "Verdict",
+    "answer_hash",
+    "as_number",
+    "as_vector",
+    "call_answer",
+    "fail",
+    "is_unanswered",
+    "ok",
+    "register",
+    "registry",
+]
+
+#: Seconds a student's function may run inside a feedback check before we give up.
+FUNCTION_TIME_LIMIT = 5.0
+
+PASS, FAIL, UNANSWERED = "passed", "failed", "not answered"
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """The outcome of one check: ``passed`` and a message in the terms of the course.
+
+    ``status`` is ``"passed"``, ``"failed"`` or ``"not answered"``.  A verdict is truthy
+    exactly when it passed, so ``assert check(...)`` works in solution notebooks.
+    """
+
+    question: str
+    passed: bool
+    message: str
+    status: str = FAIL
+
+    def __bool__(self) -> bool:
+        return self.passed
+
+    @property
+    def answered(self) -> bool:
+        return self.status != UNANSWERED
+
+    def _symbol(self) -> str:
+        return {PASS: "✓", UNANSWERED: "…"}.get(self.status, "✗")
+
+    def __str__(self) -> str:
+        return f"{self._symbol()} {self.question}: {self.message}"
+
+    def __repr__(self) -> str:
+        return str(self)
+
+    def _repr_html_(self) -> str:
+        colour = {PASS: "#1b7f3b", UNANSWERED: "#8a6d00"}.get(self.status, "#b00020")
+        back = {PASS: "#e8f5ec", UNANSWERED: "#fff8e1"}.get(self.status, "#fdecee")
+        return (
+            f'<div class="cl-verdict cl-verdict-{self.status.replace(" ", "-")}" '
+            f'style="border-left:4px solid {colour};background:{back};padding:4px 8px;'
+            f'margin:2px 0;font-family:sans-serif">'
+            f'<b style="color:{colour}">{self._symbol()} {html.escape(self.question)}</b>: '
+            f"{html.escape(self.message)}</div>"
+        )
+
+
+@dataclass(frozen=True)
+class Report:
+    """The verdicts of every question of one homework (see :func:`check_all`)."""
+
+    homework: str
+    verdicts: tuple[Verdict, ...] = field(default_factory=tuple)
+
+    @property
+    def all_passed(self) -> bool:
+        return bool(self.verdicts) and all(v.passed for v in self.verdicts)
+
+    @property
+    def n_passed(self) -> int:
+        return sum(v.passed for v in self.verdicts)
+
+    def __bool__(self) -> bool:
+        return self.all_passed
+
+    def _summary(self) -> str:
+        return f"{self.homework}: {self.n_passed} of {len(self.verdicts)} checks passed"
+
+    def __str__(self) -> str:
+        return "\n".join([self._summary(), *(f"  {v}" for v in self.verdicts)])
+
+    def __repr__(self) -> str:
+        return str(self)
+
+    def _repr_html_(self) -> str:
+        rows = "".join(v._repr_html_() for v in self.verdicts)
+        return f'<div class="cl-report"><p><b>{html.escape(self._summary())}</b></p>{rows}</div>'
+
+
+class AnswerProblem(Exception):
+    """Raised inside a check to turn a malformed answer into a failed verdict.
+
+    ``unanswered=True`` marks the answer as not given yet (a placeholder).
+    """
+
+    def __init__(self, message: str, *, unanswered: bool = False) -> None:
+        super().__init__(message)
+        self.message = message
+        self.unanswered = unanswered
+
+
+def ok(message: str = "correct.") -> tuple[bool, str]:
+    return True, message
+
+
+def fail(message: str) -> tuple[bool, str]:
+    return False, message
+
+
+# --------------------------------------------------------------------------- registry
+@dataclass(frozen=True)
+class Question:
+    """A registered question: its id, the notebook name of its answer, and its check.
+
+    ``validate(answer)`` returns ``(passed, message)`` or raises :class:`AnswerProblem`;
+    any other exception is a bug in the check and is reported as such, never raised.
+    """
+
+    qid: str
+    answer_name: str
+    validate: Callable[[object], tuple[bool, str]]
+    title: str = ""
+
+
+_REGISTRY: dict[str, Question] = {}
+
+
+def register(qid: str, answer_name: str, title: str = ""):
+    """Decorator: register ``validate`` as the check of question ``qid``."""
+
+    def deco(validate: Callable[[object], tuple[bool, str]]):
+        _REGISTRY[qid] = Question(qid, answer_name, validate, title)
+        return validate
+
+    return deco
+
+
+def registry() -> Mapping[str, Question]:
+    return dict(_REGISTRY)
+
+
+# --------------------------------------------------------------------------- answers
+def is_unanswered(answer: object) -> bool:
+    """True for the placeholders of a blank homework: ``...`` (Ellipsis) anywhere on top."""
+    if answer is Ellipsis:
+        return True
+    if isinstance(answer, (list, tuple)) and answer and all(a is Ellipsis for a in answer):
+        return True
+    return False
+
+
+def _describe(answer: object) -> str:
+    t = type(answer).__name__
+    if isinstance(answer, np.ndarray):
+        return f"a numpy array of shape {answer.shape}"
+    if isinstance(answer, (list, tuple)):
+        return f"a {t} of length {len(answer)}"
+    return f"a {t}"
+
+
+def _exception_text(exc: BaseException) -> str:
+    msg = str(exc).strip()
+    return f"{type(exc).__name__}: {msg}" if msg else type(exc).__name__
+
+
+def as_number(answer: object, name: str = "your answer") -> float:
+    """Read a real number (int, float, numpy scalar, exact sympy number) or explain why not."""
+    if is_unanswered(answer):
+        raise AnswerProblem("not answered yet (replace the ... by your answer).", unanswered=True)
+    if answer is None:
+        raise AnswerProblem(f"{name} is None -- did a function forget to `return`?")
+    if isinstance(answer, (bool, np.bool_)):
+        raise AnswerProblem(f"{name} is a bool ({answer}); a number is expected here.")
+    if isinstance(answer, np.ndarray) and answer.size == 1:
+        answer = answer.reshape(()).item()
+    if isinstance(answer, (Real, np.integer, np.floating)):
+        x = float(answer)
+    elif type(answer).__module__.startswith("sympy"):
+        try:
+            x = float(answer)
+        except (TypeError, ValueError):
+            raise AnswerProblem(
+                f"{name} is a sympy expression that is not a number "
+                f"(free symbols: {sorted(map(str, getattr(answer, 'free_symbols', [])))}); "
+                "substitute the values or call float()."
+            ) from None
+    else:
+        raise AnswerProblem(f"a number is expected here, but {name} is {_describe(answer)}.")
+    if math.isnan(x):
+        raise AnswerProblem(f"{name} is NaN -- a 0/0 somewhere (a zero-length vector?).")
+    if math.isinf(x):
+        raise AnswerProblem(f"{name} is infinite -- a division by zero somewhere?")
+    return x
+
+
+def as_vector(
+    answer: object,
+    shape: tuple[int, ...],
+    name: str = "your answer",
+    what: str = "an array",
+) -> np.ndarray:
+    """Read an array of real numbers of exactly ``shape``, or explain what is wrong."""
+    if is_unanswered(answer):
+        raise AnswerProblem("not answered yet (replace the ... by your answer).", unanswered=True)
+    if answer is None:
+        raise AnswerProblem(f"{name} is None -- did a function forget to `return`?")
+    if isinstance(answer, (str, bytes, dict, set)) or callable(answer):
+        raise AnswerProblem(f"{what} of shape {shape} is expected, but {name} is {_describe(answer)}.")
+    if isinstance(answer, (bool, np.bool_)):
+        raise AnswerProblem(f"{what} of shape {shape} is expected, but {name} is a bool.")
+    try:
+        arr = np.asarray(answer, dtype=float)
+    except (TypeError, ValueError):
+        try:  # exact sympy matrices / lists of sympy numbers
+            arr = np.asarray(np.asarray(answer, dtype=object).tolist(), dtype=float)
+        except Exception:
+            raise AnswerProblem(
+                f"{name} ({_describe(answer)}) cannot be read as real numbers; "
+                "are there symbols or strings left in it?"
+            ) from None
+    if arr.shape != tuple(shape):
+        if arr.size == int(np.prod(shape)) and arr.size > 0:
+            hint = f" (it has the right number of entries: reshape it to {shape})"
+        else:
+            hint = ""
+        raise AnswerProblem(f"{what} of shape {shape} is expected; {name} has shape {arr.shape}{hint}.")
+    if np.isnan(arr).any():
+        raise AnswerProblem(f"{name} contains NaN -- a 0/0 somewhere (a zero-length vector?).")
+    if np.isinf(arr).any():
+        raise AnswerProblem(f"{name} contains inf -- a division by zero somewhere?")
+    return arr
+
+
+class _TimeLimit(Exception):
+    pass
+
+
+@contextmanager
+def _time_limit(seconds: float):
+    """Raise :class:`_TimeLimit` after ``seconds`` (main thread on POSIX only; else no limit)."""
+    usable = hasattr(signal, "setitimer") and threading.current_thread() is threading.main_thread()
+    if not usable:
+        yield
+        return
+
+    def handler(signum, frame):
+        raise _TimeLimit
+
+    old = signal.signal(signal.SIGALRM, handler)
+    previous = signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+        if previous[0] > 0:  # someone else's timer was running: restore it
+            signal.setitimer(signal.ITIMER_REAL, *previous)
+
+
+def call_answer(func: object, *args, name: str = "your function", **kwargs) -> object:
+    """Call a student's function; turn a stub, an exception or a hang into :class:`AnswerProblem`."""
+    if is_unanswered(func):
+        raise AnswerProblem("not answered yet (write the function).", unanswered=True)
+    if func is None:
+        raise AnswerProblem(f"{name} is None; a function is expected (def ...).")
+    if not callable(func):
+        raise AnswerProblem(f"a function is expected, but {name} is {_describe(func)}.")
+    try:
+        with _time_limit(FUNCTION_TIME_LIMIT):
+            result = func(*args, **kwargs)
+    except NotImplementedError:
+        raise AnswerProblem(
+            "not answered yet (the function still raises NotImplementedError).", unanswered=True
+        ) from None
+    except _TimeLimit:
+        raise AnswerProblem(
+            f"{name} did not return within {FUNCTION_TIME_LIMIT:g} s -- an endless loop?"
+        ) from None
+    except RecursionError:
+        raise AnswerProblem(f"{name} recursed without end (RecursionError).") from None
+    except Exception as exc:
+        raise AnswerProblem(f"{name} raised {_exception_text(exc)}") from None
+    if result is Ellipsis:
+        raise AnswerProblem(f"not answered yet ({name} returns ...).", unanswered=True)
+    if result is None:
+        raise AnswerProblem(
+            f"not answered yet, or a missing `return`: {name} returns None.", unanswered=True
+        )
+    return result
+
+
+# --------------------------------------------------------------------------- hashing
+def _normalize_choice(answer: object) -> str:
+    """Canonical text of a multiple-choice answer: case, spaces and order do not matter."""
+    if isinstance(answer, str):
+        parts = [p for p in answer.replace(",", " ").replace(";", " ").split() if p]
+        if len(parts) > 1:
+            answer = parts
+        else:
+            return answer.strip().lower()
+    if isinstance(answer, (list, tuple, set, frozenset)):
+        items = sorted(str(a).strip().lower() for a in answer)
+        return ",".join(items)
+    if isinstance(answer, (bool, np.bool_)):
+        return str(bool(answer)).lower()
+    if isinstance(answer, (int, np.integer)):
+        return str(int(answer))
+    return str(answer).strip().lower()
+
+
+def answer_hash(answer: object, salt: str = "") -> str:
+    """SHA-256 (first 16 hex digits) of the canonical form of a choice answer.
+
+    ``salt`` is normally the question id, so equal answers to different questions
+    hash differently.  Use it to make the ``correct_hash`` of :func:`check_choice`.
+    """
+    text = f"{salt}|{_normalize_choice(answer)}"
+    return hashlib.sha256(text.encode()).hexdigest()[:16]
+
+
+def run_validate(qid: str, validate: Callable[[object], tuple[bool, str]], answer: object) -> Verdict:
+    """Apply ``validate`` to ``answer`` and wrap the outcome in a :class:`Verdict`; never raises."""
+    try:
+        passed, message = validate(answer)
+    except AnswerProblem as p:
+        status = UNANSWERED if p.unanswered else FAIL
+        return Verdict(qid, False, p.message, status)
+    except Exception as exc:  # a check must never show a traceback
+        return Verdict(
+            qid,
+            False,
+            f"the check could not read your answer ({_exception_text(exc)}); "
+            "look at its type and shape.",
+            FAIL,
+        )
+    return Verdict(qid, bool(passed), message, PASS if passed else FAIL)

@@ -1,0 +1,48 @@
+"""Pictures of the course: every function takes an Axes and returns its artists.
+
+Importing this package imports matplotlib (``import course_lib`` does not).  Nothing
+changes matplotlib's global settings at import time; the course style is applied by
+:func:`course_style` (a context manager) or :func:`new_figure`.
+
+Modules: :mod:`.style` (palette, rcParams, ``new_figure``), :mod:`.curves` (curves and
+control polygons), :mod:`.vectors` (tangent, normal, curvature vector, osculating
+circle), :mod:`.curvature` (curvature comb, curvature against arc length),
+:mod:`.constructions` (stitching, Farin-Boehm, Beta-spline and knot-spline
+construction diagrams), :mod:`.blending` (blending functions), :mod:`.surfaces3d`
+(Bézier patches and their normals).
+"""
+
+from __future__ import annotations
+
+from .curvature import (
+    CombArtists,
+    CurvatureProfileArtists,
+    curvature_profile,
+    plot_curvature_comb,
+    plot_curvature_profile,
+)
+from .curves import CurveArtists, PointsArtists, plot_control_polygon, plot_curve
+from .style import COURSE_RC, OKABE_ITO, ROLE_COLORS, course_style, new_figure, segment_color
+from .vectors import FrameArtists, OsculatingCircleArtists, plot_frame, plot_osculating_circle
+
+__all__ = [
+    "COURSE_RC",
+    "OKABE_ITO",
+    "ROLE_COLORS",
+    "CombArtists",
+    "CurvatureProfileArtists",
+    "CurveArtists",
+    "FrameArtists",
+    "OsculatingCircleArtists",
+    "PointsArtists",
+    "course_style",
+    "curvature_profile",
+    "new_figure",
+    "plot_control_polygon",
+    "plot_curvature_comb",
+    "plot_curvature_profile",
+    "plot_curve",
+    "plot_frame",
+    "plot_osculating_circle",
+    "segment_color",
+]

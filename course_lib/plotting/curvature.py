@@ -1,0 +1,258 @@
+"""Curvature pictures: the curvature comb (porcupine) and curvature against arc length.
+
+A G1 joint that is not G2 shows as a jump of the curvature.  Both pictures draw
+each segment on its own (its samples run up to its own one-sided limit at each
+joint), so a jump is never bridged by a connecting line.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import differential_geometry as dg
+from .._validation import check_integer
+from ._sampling import segment_grid
+from .style import ROLE_COLORS, SIZES, segment_color
+
+__all__ = [
+    "CombArtists",
+    "CurvatureProfileArtists",
+    "comb_teeth",
+    "curvature_profile",
+    "plot_curvature_comb",
+    "plot_curvature_profile",
+]
+
+
+def _per_segment(curve, samples: int) -> int:
+    samples = check_integer(samples, "samples", minimum=2)
+    return max(2, round(samples / curve.n_segments))
+
+
+def comb_teeth(curve, per_segment: int, scale: float, side: int = -1):
+    """Feet and tips of the comb's teeth, each of shape ``(S, n, dim)``.
+
+    A tooth stands at ``c(t)`` and ends at ``c(t) + side * scale * K(t)``, ``K`` the
+    curvature vector (``kappa N`` in the plane): perpendicular to the curve, of length
+    ``scale * |kappa|``; ``side = -1`` (default) points away from the centre of curvature.
+    """
+    t = segment_grid(curve, per_segment)
+    flat = t.ravel()
+    feet = curve.evaluate(flat)
+    K = dg.curvature_vector(curve, flat)
+    tips = feet + (side * scale) * K
+    shape = (*t.shape, curve.dim)
+    return feet.reshape(shape), tips.reshape(shape)
+
+
+@dataclass
+class CombArtists:
+    """Artists of :func:`plot_curvature_comb`.
+
+    Attributes
+    ----------
+    teeth : LineCollection
+        One two-point line per tooth, foot first.
+    envelope : LineCollection
+        The tips joined up, one line per segment (not bridged across a joint).
+    scale : float
+        Drawn tooth length per unit of curvature.
+    per_segment : int
+    side : int
+        -1: teeth point away from the centre of curvature; +1: towards it.
+    """
+
+    teeth: object
+    envelope: object
+    scale: float
+    per_segment: int
+    side: int
+
+    @property
+    def artists(self) -> list:
+        return [self.teeth, self.envelope]
+
+    def update(self, curve) -> None:
+        feet, tips = comb_teeth(curve, self.per_segment, self.scale, self.side)
+        n = feet.shape[0] * feet.shape[1]
+        segs = np.stack([feet.reshape(n, -1), tips.reshape(n, -1)], axis=1)
+        self.teeth.set_segments(segs)
+        self.envelope.set_segments(list(tips))
+        self.envelope.set_color([_envelope_color(i) for i in range(curve.n_segments)])
+
+
+def _envelope_color(i: int) -> str:
+    return segment_color(i)
+
+
+def _auto_scale(curve, K: np.ndarray) -> float:
+    P = np.vstack(curve.segments)
+    diag = float(np.linalg.norm(P.max(axis=0) - P.min(axis=0))) or 1.0
+    kmax = float(np.max(np.linalg.norm(K, axis=-1))) if K.size else 0.0
+    return 0.2 * diag / kmax if kmax > 0 else 1.0
+
+
+def plot_curvature_comb(
+    ax,
+    curve,
+    *,
+    samples: int = 400,
+    scale: float | None = None,
+    side: str = "outside",
+    zorder: float = 1.5,
+) -> CombArtists:
+    """Draw the curvature comb: teeth normal to the curve, of length proportional to curvature.
+
+    Parameters
+    ----------
+    curve : PiecewiseBezier (plane)
+    samples : int
+        Total number of teeth, spread evenly over the segments (in parameter).
+    scale : float, optional
+        Tooth length per unit of curvature (default: the longest tooth is 20 % of
+        the control points' bounding-box diagonal).  Fixed afterwards: a widget
+        shows the curvature change, not a rescaled comb.
+    side : {"outside", "inside"}
+        Teeth away from (default) or towards the centre of curvature.
+
+    Returns
+    -------
+    CombArtists
+    """
+    from matplotlib.collections import LineCollection
+
+    if side not in ("outside", "inside"):
+        raise ValueError(f"side must be 'outside' or 'inside'; got {side!r}")
+    if curve.dim != 2:
+        raise ValueError(f"plot_curvature_comb draws plane curves; this curve has dim {curve.dim}")
+    sgn = -1 if side == "outside" else 1
+    n = _per_segment(curve, samples)
+    if scale is None:
+        t = segment_grid(curve, n).ravel()
+        scale = _auto_scale(curve, dg.curvature_vector(curve, t))
+    feet, tips = comb_teeth(curve, n, scale, sgn)
+    m = feet.shape[0] * feet.shape[1]
+    teeth = LineCollection(
+        np.stack([feet.reshape(m, -1), tips.reshape(m, -1)], axis=1),
+        colors=ROLE_COLORS["comb"], linewidths=SIZES["comb"], zorder=zorder,
+        label="curvature comb",
+    )
+    env = LineCollection(
+        list(tips), colors=[_envelope_color(i) for i in range(curve.n_segments)],
+        linewidths=SIZES["comb_envelope"], zorder=zorder, alpha=0.9,
+    )
+    ax.add_collection(teeth)
+    ax.add_collection(env)
+    ax.autoscale_view()
+    return CombArtists(teeth, env, float(scale), n, sgn)
+
+
+def curvature_profile(curve, per_segment: int = 80, *, signed: bool = True, x: str = "arc_length"):
+    """Samples for :func:`plot_curvature_profile`: ``(X, kappa)``, each of shape ``(S, n)``.
+
+    ``X`` is the arc length from the start (``x="arc_length"``) or the global
+    parameter (``x="parameter"``); ``kappa`` is the signed curvature (plane curves,
+    ``signed=True``) or ``|kappa|``.  Row ``i`` is segment ``i``, its last entry the
+    one-sided limit at the joint.
+    """
+    if x not in ("arc_length", "parameter"):
+        raise ValueError(f"x must be 'arc_length' or 'parameter'; got {x!r}")
+    t = segment_grid(curve, per_segment)
+    flat = t.ravel()
+    if signed and curve.dim == 2:
+        k = dg.signed_curvature(curve, flat)
+    else:
+        k = dg.curvature(curve, flat)
+    X = dg.cumulative_arc_length(curve, flat) if x == "arc_length" else flat
+    return np.asarray(X).reshape(t.shape), np.asarray(k).reshape(t.shape)
+
+
+@dataclass
+class CurvatureProfileArtists:
+    """Artists of :func:`plot_curvature_profile`.
+
+    Attributes
+    ----------
+    lines : LineCollection
+        One line per segment: ``(X, kappa)`` (``get_segments()[i]``).
+    ends : Line2D
+        Dots at both ends of each segment: a jump shows as two dots one above the other.
+    joint_lines : LineCollection
+        Dotted vertical lines at the joints.
+    """
+
+    lines: object
+    ends: object
+    joint_lines: object
+    per_segment: int
+    signed: bool
+    x: str
+
+    @property
+    def artists(self) -> list:
+        return [self.lines, self.ends, self.joint_lines]
+
+    def update(self, curve, *, rescale: bool = True) -> None:
+        X, k = curvature_profile(curve, self.per_segment, signed=self.signed, x=self.x)
+        self.lines.set_segments(list(np.stack([X, k], axis=-1)))
+        self.lines.set_color([segment_color(i) for i in range(curve.n_segments)])
+        ex = np.stack([X[:, 0], X[:, -1]], axis=1).ravel()
+        ek = np.stack([k[:, 0], k[:, -1]], axis=1).ravel()
+        self.ends.set_data(ex, ek)
+        self.joint_lines.set_segments([[(xj, 0.0), (xj, 1.0)] for xj in X[1:, 0]])
+        if rescale:
+            ax = self.lines.axes
+            lo, hi = float(np.min(k)), float(np.max(k))
+            pad = 0.08 * (hi - lo) if hi > lo else max(abs(hi), 1.0) * 0.1
+            ax.set_xlim(float(X[0, 0]), float(X[-1, -1]))
+            ax.set_ylim(min(lo, 0.0) - pad, max(hi, 0.0) + pad)
+
+
+def plot_curvature_profile(
+    ax,
+    curve,
+    *,
+    per_segment: int = 80,
+    signed: bool = True,
+    x: str = "arc_length",
+    labels: bool = True,
+) -> CurvatureProfileArtists:
+    """Curvature against arc length (or parameter), each segment drawn on its own.
+
+    At a joint where the curve is G1 but not G2 the two pieces end at different
+    heights: the drawn jump ``kappa_right - kappa_left`` is the jump of the signed
+    curvature (seed 000 §6: G2 means a continuous curvature vector).
+
+    Returns
+    -------
+    CurvatureProfileArtists
+    """
+    from matplotlib.collections import LineCollection
+    from matplotlib.transforms import blended_transform_factory
+
+    per_segment = check_integer(per_segment, "per_segment", minimum=2)
+    X, k = curvature_profile(curve, per_segment, signed=signed, x=x)
+    S = curve.n_segments
+    lines = LineCollection(
+        list(np.stack([X, k], axis=-1)), colors=[segment_color(i) for i in range(S)],
+        linewidths=SIZES["curve"] * 0.8, zorder=3,
+    )
+    ax.add_collection(lines)
+    ex = np.stack([X[:, 0], X[:, -1]], axis=1).ravel()
+    ek = np.stack([k[:, 0], k[:, -1]], axis=1).ravel()
+    (ends,) = ax.plot(ex, ek, ls="none", marker="o", ms=5, color="black", zorder=4)
+    trans = blended_transform_factory(ax.transData, ax.transAxes)
+    jl = LineCollection(
+        [[(xj, 0.0), (xj, 1.0)] for xj in X[1:, 0]], transform=trans, colors=ROLE_COLORS["joint"],
+        linestyles=":", linewidths=1.5, zorder=1,
+    )
+    ax.add_collection(jl, autolim=False)
+    ax.axhline(0.0, color="#999999", lw=0.8, zorder=0)
+    if labels:
+        ax.set_xlabel("arc length s" if x == "arc_length" else "parameter t")
+        ax.set_ylabel("signed curvature κ" if (signed and curve.dim == 2) else "curvature |κ|")
+    arts = CurvatureProfileArtists(lines, ends, jl, per_segment, signed, x)
+    arts.update(curve, rescale=True)
+    return arts

@@ -1,0 +1,184 @@
+"""One consistent, projector- and print-friendly look for every picture of the course.
+
+Colours come from the Okabe-Ito palette (distinguishable with the common forms of
+colour blindness and in greyscale print); fonts and lines are large enough to read
+from the back of a lecture room.  Nothing here changes matplotlib's global state at
+import time: use :func:`course_style` as a context manager (or decorator), or create
+figures with :func:`new_figure`, which applies it for you.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from contextlib import contextmanager
+from types import MappingProxyType
+
+__all__ = [
+    "COLORS",
+    "COURSE_RC",
+    "OKABE_ITO",
+    "ROLE_COLORS",
+    "SIZES",
+    "course_style",
+    "new_figure",
+    "segment_color",
+]
+
+#: The eight Okabe-Ito colours (Okabe & Ito, "Color Universal Design", 2002).
+OKABE_ITO = MappingProxyType(
+    {
+        "black": "#000000",
+        "orange": "#E69F00",
+        "sky_blue": "#56B4E9",
+        "bluish_green": "#009E73",
+        "yellow": "#F0E442",
+        "blue": "#0072B2",
+        "vermillion": "#D55E00",
+        "reddish_purple": "#CC79A7",
+    }
+)
+COLORS = OKABE_ITO
+
+#: What each colour means in the course's pictures (the same role, the same colour, everywhere).
+ROLE_COLORS = MappingProxyType(
+    {
+        "segment_even": OKABE_ITO["blue"],
+        "segment_odd": OKABE_ITO["vermillion"],
+        "polygon": "#6E6E6E",
+        "control_point": OKABE_ITO["black"],
+        "joint": OKABE_ITO["orange"],
+        "tangent": OKABE_ITO["bluish_green"],
+        "normal": OKABE_ITO["sky_blue"],
+        "curvature": OKABE_ITO["reddish_purple"],
+        "circle": OKABE_ITO["reddish_purple"],
+        "comb": OKABE_ITO["sky_blue"],
+        "comb_envelope": OKABE_ITO["blue"],
+        "construction": OKABE_ITO["bluish_green"],
+        "highlight": OKABE_ITO["orange"],
+        "moving_point": OKABE_ITO["black"],
+    }
+)
+
+#: rcParams of the course style (applied only inside :func:`course_style`).
+COURSE_RC = MappingProxyType(
+    {
+        "font.size": 13,
+        "axes.titlesize": 14,
+        "axes.labelsize": 13,
+        "legend.fontsize": 11,
+        "xtick.labelsize": 11,
+        "ytick.labelsize": 11,
+        "lines.linewidth": 2.4,
+        "lines.markersize": 7,
+        "axes.linewidth": 1.0,
+        "axes.grid": True,
+        "grid.color": "#DDDDDD",
+        "grid.linewidth": 0.8,
+        "axes.spines.top": False,
+        "axes.spines.right": False,
+        "axes.prop_cycle": None,  # filled in lazily (needs matplotlib's cycler)
+        "figure.dpi": 100,
+        "savefig.dpi": 150,
+        "savefig.bbox": "tight",
+        "legend.frameon": False,
+        "image.cmap": "cividis",
+    }
+)
+
+
+def segment_color(i: int) -> str:
+    """Colour of segment ``i``: neighbouring segments alternate, so every joint is visible."""
+    return ROLE_COLORS["segment_even"] if i % 2 == 0 else ROLE_COLORS["segment_odd"]
+
+
+def _rc() -> dict:
+    from cycler import cycler
+
+    rc = dict(COURSE_RC)
+    order = ["blue", "vermillion", "bluish_green", "orange", "reddish_purple", "sky_blue", "black"]
+    rc["axes.prop_cycle"] = cycler(color=[OKABE_ITO[k] for k in order])
+    return rc
+
+
+@contextmanager
+def course_style() -> Iterator[None]:
+    """Apply the course style inside a ``with`` block, restoring matplotlib's settings after.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> with course_style():
+    ...     fig, ax = plt.subplots()
+    """
+    import matplotlib as mpl
+
+    with mpl.rc_context(_rc()):
+        yield
+
+
+def new_figure(
+    nrows: int = 1,
+    ncols: int = 1,
+    *,
+    figsize: tuple[float, float] | None = None,
+    pyplot: bool = True,
+    projection: str | None = None,
+    **subplot_kw: object,
+):
+    """A figure and its Axes in the course style.
+
+    Parameters
+    ----------
+    nrows, ncols : int
+        Grid of Axes.
+    figsize : (width, height) in inches, optional
+        Default ``(6.4 * ncols, 4.8 * nrows)`` scaled down to at most 12 inches wide.
+    pyplot : bool
+        True (default): create through ``pyplot`` so that notebooks display it;
+        False: a bare :class:`matplotlib.figure.Figure` on the Agg canvas (for files,
+        tests and widgets; never registered with pyplot).
+    projection : str, optional
+        ``"3d"`` for surface pictures.
+
+    Returns
+    -------
+    fig : matplotlib.figure.Figure
+    ax : Axes, or ndarray of Axes when ``nrows * ncols > 1``
+    """
+    if figsize is None:
+        w = min(6.4 * ncols, 12.0)
+        figsize = (w, w / (6.4 * ncols) * 4.8 * nrows)
+    kw = dict(subplot_kw)
+    if projection is not None:
+        kw["projection"] = projection
+    with course_style():
+        if pyplot:
+            import matplotlib.pyplot as plt
+
+            fig, ax = plt.subplots(
+                nrows, ncols, figsize=figsize, subplot_kw=kw or None, layout="constrained"
+            )
+        else:
+            from matplotlib.backends.backend_agg import FigureCanvasAgg
+            from matplotlib.figure import Figure
+
+            fig = Figure(figsize=figsize, layout="constrained")
+            FigureCanvasAgg(fig)
+            ax = fig.subplots(nrows, ncols, subplot_kw=kw or None)
+    return fig, ax
+
+#: Line widths and marker sizes used by the plotting functions (explicit, so a picture
+#: looks the same whether or not it was drawn inside :func:`course_style`).
+SIZES = MappingProxyType(
+    {
+        "curve": 2.8,
+        "polygon": 1.3,
+        "construction": 1.4,
+        "comb": 0.9,
+        "comb_envelope": 1.4,
+        "control_point": 7.0,
+        "joint": 9.0,
+        "moving_point": 8.0,
+        "label": 13.0,
+    }
+)

@@ -1,0 +1,37 @@
+"""`import course_lib` and its math submodules must not load sympy, matplotlib or ipywidgets."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+MODULES = [
+    "course_lib",
+    "course_lib.parametrization",
+    "course_lib.differential_geometry",
+    "course_lib.reparametrization",
+    "course_lib.beta_constraints",
+    "course_lib.continuity",
+]
+HEAVY = ["sympy", "matplotlib", "ipywidgets", "scipy"]
+# The numeric paths must stay light at call time too (numeric Beta-constraints, reports).
+USE = """
+import numpy as np
+from course_lib import PiecewiseBezier
+from course_lib import beta_constraints as bc, continuity as co, differential_geometry as dg
+c = PiecewiseBezier([np.array([[0, 0], [1, 1], [2, 0.]]), np.array([[2, 0], [3, -1], [4, 0.]])])
+bc.solve_shape_parameters(bc.apply_beta_constraints(np.eye(2), [2.0, 1.0]), np.eye(2))
+str(co.curve_continuity(c)[0])
+dg.arc_length(c), dg.signed_curvature(c, 0.5), dg.parameter_at_arc_length(c, 1.0)
+"""
+
+
+def test_math_modules_import_light():
+    code = (
+        "import sys\n"
+        + "".join(f"import {m}\n" for m in MODULES)
+        + USE
+        + f"print(','.join(m for m in {HEAVY!r} if m in sys.modules))\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "", f"heavy modules imported: {out.stdout.strip()}"
