@@ -82,9 +82,9 @@ def run(sizes: Sizes) -> list[Result]:
         "arc length of one cubic", PiecewiseBezier([CUBIC]), [CUBIC], arc_length, sizes,
         5 * sizes.repeats,
     )
-    spline = build_curves()[1]
+    spline = build_curves(sizes.arc_segments)[1]
     many = _row(
-        "arc length of the 50-segment cubic spline", spline, spline.segments, arc_length,
-        sizes, sizes.repeats, "; quad called once per segment",
+        f"arc length of a {sizes.arc_segments}-segment cubic spline", spline, spline.segments,
+        arc_length, sizes, sizes.repeats, "; quad called once per segment",
     )
     return [one, many]

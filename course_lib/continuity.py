@@ -29,8 +29,6 @@ is traversed.
 
 For a :class:`~course_lib.curve.PiecewiseBezier`, :func:`curve_continuity` uses the
 *global* parameter (knots): the knots change the C-order but never the G-order.
-
-Lesson: ``notebooks/05_three_characterizations.ipynb``.
 """
 
 from __future__ import annotations

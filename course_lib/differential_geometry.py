@@ -19,8 +19,6 @@ Every function accepts any object of the parametrization protocol (``CONTRIBUTIN
 :class:`~course_lib.reparametrization.Reparametrized`.  A scalar ``t`` gives a
 ``(dim,)`` vector or a float, a 1-d ``t`` gives ``(m, dim)`` or ``(m,)``.
 Where a formula divides by ``|c'|`` and ``c'`` vanishes, a ``ValueError`` says so.
-
-Lesson: ``notebooks/01_differential_geometry.ipynb``.
 """
 
 from __future__ import annotations
@@ -131,12 +129,18 @@ def _integrate_speed(curve, a: np.ndarray, b: np.ndarray, rtol: float = 1e-13) -
     if a.size == 0:
         return total
     owner = np.arange(a.size)
-    whole = _gl(curve, a, b)
+    k = a.size
+    mid = 0.5 * (a + b)
+    # one vectorized evaluation per level: the whole intervals (first level only) and halves
+    first = _gl(curve, np.concatenate([a, a, mid]), np.concatenate([b, mid, b]))
+    whole, left, right = first[:k], first[k : 2 * k], first[2 * k :]
     scale = max(float(np.abs(whole).sum()), 1e-300)
     for depth in range(60):
-        mid = 0.5 * (a + b)
-        left = _gl(curve, a, mid)
-        right = _gl(curve, mid, b)
+        if depth:
+            k = a.size
+            mid = 0.5 * (a + b)
+            halves = _gl(curve, np.concatenate([a, mid]), np.concatenate([mid, b]))
+            left, right = halves[:k], halves[k:]
         both = left + right
         err = np.abs(both - whole)
         ok = (err <= rtol * np.abs(both)) | (err <= 1e-15 * scale)
@@ -441,10 +445,11 @@ def _as_curvature_function(kappa: object) -> Callable[[np.ndarray], np.ndarray]:
     if callable(kappa):
 
         def f(s: np.ndarray) -> np.ndarray:
-            out = np.broadcast_to(np.asarray(kappa(s), dtype=float), s.shape)
+            flat = s.ravel()  # kappa is called with a 1-d array of arc lengths
+            out = np.broadcast_to(np.asarray(kappa(flat), dtype=float), flat.shape)
             if not np.all(np.isfinite(out)):
                 raise ValueError("kappa(s) must be finite on [0, length]")
-            return out
+            return out.reshape(s.shape)
 
         return f
     k0 = check_finite_scalar(kappa, "kappa")
@@ -471,7 +476,8 @@ def curve_from_curvature(
     Parameters
     ----------
     kappa : callable or float
-        Signed curvature as a vectorized function of arc length (or a constant).
+        Signed curvature as a function of arc length, called with a 1-d array
+        ``s`` and returning an array of the same length (or a constant).
     length : float
         Total arc length, > 0.
     start_point : (x, y)

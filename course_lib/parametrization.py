@@ -140,7 +140,7 @@ class ParametricCurve:
         >>> import sympy as sp
         >>> t = sp.Symbol("t")
         >>> c = ParametricCurve.from_sympy([sp.cos(t), sp.sin(t)], t, (0, 1))
-        >>> c.evaluate(0.0, n=1)
+        >>> c.evaluate(0.0, n=1) + 0.0  # (-sin 0, cos 0)
         array([0., 1.])
         """
         import sympy as sp

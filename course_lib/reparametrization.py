@@ -17,8 +17,6 @@ curve) when ``Q~ = Q o f`` for a regular ``f: [ũ_0, ũ_f] -> [u_0, u_f]`` onto,
 
 Derivative vectors are not intrinsic (they change under reparametrization); the unit
 tangent and the curvature are (seed 000 §4).
-
-Lesson: ``notebooks/02_reparametrization.ipynb``.
 """
 
 from __future__ import annotations
@@ -231,9 +229,9 @@ class ChangeOfVariables:
 
         It has ``u(end) = image_end`` and ``u^{(j)}(end) = β_j`` -- the change of
         variables behind the Beta-constraints (seed 000 §5, ``β_j = u^{(j)}(1)``).
-        Its domain ``[end - w, end]`` is chosen with ``w <= max_width`` small enough
-        that ``u' > 0`` there (possible because ``β_1 > 0``) and, if given,
-        ``u(end - w) >= image_start_min``.
+        Its domain ``[end - w, end]`` is chosen with ``w <= max_width`` (halved as
+        needed) small enough that ``u' > β_1 / 2`` at 257 sample points there
+        (possible because ``β_1 > 0``) and, if given, ``u(end - w) >= image_start_min``.
 
         Raises
         ------

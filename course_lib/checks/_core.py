@@ -361,3 +361,41 @@ def run_validate(qid: str, validate: Callable[[object], tuple[bool, str]], answe
             FAIL,
         )
     return Verdict(qid, bool(passed), message, PASS if passed else FAIL)
+
+
+def register_choice(qid: str, answer_name: str, correct_hash: str, title: str = "") -> None:
+    """Register a multiple-choice question checked against ``answer_hash(right, salt=qid)``."""
+
+    def validate(answer):
+        if is_unanswered(answer) or answer is None:
+            raise AnswerProblem("not answered yet (replace the ... by your choice).", unanswered=True)
+        if isinstance(answer, float) or callable(answer):
+            raise AnswerProblem("give the letter(s) of your choice, e.g. 'b' or 'a, c'.")
+        if answer_hash(answer, salt=qid) == correct_hash:
+            return ok("right.")
+        return fail("not this one -- think again (re-read the statement).")
+
+    _REGISTRY[qid] = Question(qid, answer_name, validate, title)
+
+
+def unit(v: np.ndarray) -> np.ndarray:
+    return v / np.linalg.norm(v)
+
+
+def cross2(a: np.ndarray, b: np.ndarray) -> float:
+    """z-component of the cross product of two plane vectors."""
+    return float(a[0] * b[1] - a[1] * b[0])
+
+
+def parallel(a: np.ndarray, b: np.ndarray, tol: float = 1e-9) -> bool:
+    """True if ``a`` and ``b`` are parallel (either orientation), relative tolerance."""
+    na, nb = np.linalg.norm(a), np.linalg.norm(b)
+    if na == 0 or nb == 0:
+        return False
+    ca, cb = a / na, b / nb
+    return bool(np.linalg.norm(ca - cb) < tol or np.linalg.norm(ca + cb) < tol)
+
+
+def close(a: object, b: object, tol: float = 1e-9) -> bool:
+    a, b = np.asarray(a, float), np.asarray(b, float)
+    return bool(np.allclose(a, b, rtol=tol, atol=tol * max(1.0, float(np.abs(b).max(initial=0)))))

@@ -238,9 +238,10 @@ def plot_farin_boehm(
         lab.update({f"W{j}": f"$W_{{{j}}}$" for j in range(1, W.shape[0])})
         lab["T"] = "$T$"
     g = "γ" if gamma is None else f"γ={gamma:.3g}"
+    bg = "β₁²γ" if beta1 is None or gamma is None else f"β₁²γ={beta1**2 * gamma:.3g}"
     ratios = [
-        (f"V{d - 2}", f"V{d - 1}", "1", 1.0),
-        (f"V{d - 1}", "T", "β₁²γ" if beta1 is None else f"β₁²γ={beta1**2 * (gamma or 0):.3g}", 1.0),
+        (f"V{d - 2}", f"V{d - 1}", "1", -1.0),
+        (f"V{d - 1}", "T", bg, -1.0),
         ("T", "W1", g, 1.0),
         ("W1", "W2", "1", 1.0),
     ]
@@ -271,8 +272,9 @@ def _first(x):
 def plot_stitching(ax, curve, *, labels: bool = True) -> Diagram:
     """The stitching diagram of a two-segment curve built by G1 or G2 stitching.
 
-    Reads ``curve.segments`` (``V``, ``W``) and ``curve.info`` (``"T"``, ``"beta1"``,
-    ``"gamma"``): Fig. 8 (Farin-Boehm) when ``T`` is recorded, else Fig. 7 (G1).
+    Reads ``curve.segments`` (``V``, ``W``) and ``curve.info`` (``"beta1"``, ``"beta2"``,
+    or ``"T"``, ``"gamma"``): Fig. 8 (Farin-Boehm, ``T`` from
+    :func:`course_lib.stitching.farin_boehm`) for a G2 stitch, else Fig. 7 (G1).
     """
     if curve.n_segments != 2:
         raise ValueError(
@@ -281,9 +283,16 @@ def plot_stitching(ax, curve, *, labels: bool = True) -> Diagram:
     V, W = curve.segments
     info = curve.info
     b1 = _first(_info_get(info, "beta1", "β1"))
+    b2 = _first(_info_get(info, "beta2", "β2"))
     T = _info_get(info, "T")
+    gamma = _first(_info_get(info, "gamma"))
+    if T is None and b1 is not None and b2 is not None:
+        from ..stitching import farin_boehm
+
+        fb = farin_boehm(V[-3:], b1, b2, V.shape[0] - 1)
+        T, gamma = fb.T, fb.gamma
     if T is not None:
-        return plot_farin_boehm(ax, V, W, T, b1, _first(_info_get(info, "gamma")), labels=labels)
+        return plot_farin_boehm(ax, V, W, T, b1, gamma, labels=labels)
     return plot_g1_stitch(ax, V, W, b1, labels=labels)
 
 

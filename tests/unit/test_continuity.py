@@ -234,3 +234,22 @@ CUSP_R = PiecewiseBezier([np.array([V[3], V[3], [6.0, 0.0], [7.0, 1.0]])])
 def test_bad_input(call, exc, match):
     with pytest.raises(exc, match=match):
         call()
+
+
+@pytest.mark.parametrize("scale", [1e-6, 1.0, 1e6])
+@pytest.mark.parametrize("knots", [None, [0.0, 1e-3, 3e-3], [0.0, 100.0, 101.0]])
+def test_verdict_independent_of_units_and_knots(scale, knots):
+    q, r = cubic_pair([1.5, 0.7])
+    (rep,) = curve_continuity(
+        PiecewiseBezier([q.segments[0] * scale, r.segments[0] * scale], knots)
+    )
+    check_agree(rep, 2)
+
+
+def test_knot_ratio_equal_to_beta1_gives_c1():
+    # local r'(0) = β1 q'(1); in the global parameter the derivatives are divided by the
+    # interval lengths h0, h1, so the joint is C1 exactly when h1 / h0 = β1 (seed 004 §19.7)
+    q, r = cubic_pair([2.0])
+    (rep,) = curve_continuity(PiecewiseBezier([q.segments[0], r.segments[0]], [0.0, 1.0, 3.0]))
+    assert rep.c_order == 1
+    check_agree(rep, 1)

@@ -16,7 +16,7 @@ from math import comb
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from course_lib import PiecewiseBezier, bezier
@@ -59,16 +59,32 @@ def random_curve(rng, degrees, dim=2, knots=None):
     coords=st.lists(st.integers(-1000, 1000), min_size=2 * (TOP + 1), max_size=2 * (TOP + 1)),
     num=st.integers(0, 64),
 )
+@example(degree=TOP, n=0, coords=list(range(-9, 9)), num=64)  # the curve's end, u = 1
+@example(degree=3, n=2, coords=list(range(18)), num=32)  # the split point u = 1/2
 def test_taylor_form_matches_exact_rationals(degree, n, coords, num):
     pts = np.array(coords[: 2 * (degree + 1)], dtype=float).reshape(-1, 2) / 7.0
-    # knots 0 < 0.75 < 2.5: a non-unit knot sequence (the search path)
+    # knots -1 < 0 < 0.75: a non-unit knot sequence (the search path); pts is the last
+    # segment, so u = 1 (t = 0.75, the curve's end) belongs to it
     other = np.array([[3.0, 1.0], [4.0, 2.0]])
-    c = PiecewiseBezier([pts, other], knots=[0.0, 0.75, 2.5])
+    c = PiecewiseBezier([other, pts], knots=[-1.0, 0.0, 0.75])
     u = Fraction(num, 64)
     t = float(Fraction(3, 4) * u)  # exact: a multiple of 3/256
     expected = np.array([float(x) for x in exact_derivative(pts.tolist(), u, n)]) / 0.75**n
     scale = hodograph_scale(pts, n) / 0.75**n
     np.testing.assert_allclose(c.evaluate(t, n), expected, rtol=0, atol=1e-13 * scale)
+
+
+@pytest.mark.parametrize("degree", [1, 4, TOP])
+def test_taylor_form_on_the_worst_case_polygon(degree):
+    """Alternating control points maximize |Δ^k Q| = 2^k max|Q|: the bound's worst case."""
+    P = np.array([[(-1.0) ** i, (-1.0) ** (i // 2)] for i in range(degree + 1)]) * 1000.0
+    c = PiecewiseBezier([P])
+    us = [Fraction(k, 64) for k in range(65)]  # exact in binary
+    u = np.array([float(x) for x in us])
+    for n in range(4):
+        expected = np.array([[float(v) for v in exact_derivative(P.tolist(), x, n)] for x in us])
+        err = np.abs(c.evaluate(u, n) - expected).max() / hodograph_scale(P, n)
+        assert err < 1e-13
 
 
 @pytest.mark.parametrize("degree", range(1, TOP + 1))

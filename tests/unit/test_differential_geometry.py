@@ -180,9 +180,7 @@ def test_fundamental_theorem_round_trip():
     L = dg.arc_length(cubic)
 
     def kappa(s):
-        return dg.signed_curvature(cubic, dg.parameter_at_arc_length(cubic, s.ravel())).reshape(
-            s.shape
-        )
+        return dg.signed_curvature(cubic, dg.parameter_at_arc_length(cubic, s))
 
     T0 = dg.unit_tangent(cubic, 0.0)
     res = dg.curve_from_curvature(kappa, L, start_point=(0.0, 0.0), start_tangent=T0, num=41)

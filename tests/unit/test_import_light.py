@@ -35,3 +35,35 @@ def test_math_modules_import_light():
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "", f"heavy modules imported: {out.stdout.strip()}"
+
+
+# Every math submodule of the module map (CONTRIBUTING.md) that exists so far, each
+# imported in turn in one fresh interpreter; the first one that pulls in a heavy
+# package is named.  (Added with the benchmarks, issue "Benchmarks".)
+ALL_MATH = [
+    "bezier", "curve", "differential_geometry", "reparametrization", "beta_constraints",
+    "continuity", "stitching", "catmull_rom", "beta_splines", "knot_splines", "higher_order",
+    "surfaces",
+]
+LIGHT_ONLY = ["sympy", "matplotlib", "ipywidgets"]
+
+
+def test_every_existing_math_submodule_imports_light():
+    from pathlib import Path
+
+    package = Path(__file__).resolve().parents[2] / "course_lib"
+    present = [m for m in ALL_MATH if (package / f"{m}.py").exists()]
+    assert {"bezier", "curve"} <= set(present)
+    code = (
+        "import sys\n"
+        f"heavy = {LIGHT_ONLY!r}\n"
+        "import course_lib\n"
+        "culprits = []\n"
+        f"for name in {present!r}:\n"
+        "    __import__('course_lib.' + name)\n"
+        "    culprits += [(name, h) for h in heavy if h in sys.modules and\n"
+        "                 all(h != c[1] for c in culprits)]\n"
+        "print(culprits)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "[]", f"(submodule, heavy package) pairs: {out.stdout.strip()}"

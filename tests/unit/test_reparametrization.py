@@ -206,3 +206,17 @@ def test_are_equivalent_negative_cases():
 def test_bad_input(call, exc, match):
     with pytest.raises(exc, match=match):
         call()
+
+
+def test_reparametrized_piecewise_curve_keeps_breakpoints_and_length():
+    curve = PiecewiseBezier(
+        [CUBIC.segments[0], np.array([[4.0, 1.0], [5.0, 2.0], [6.0, 0.0]])], knots=[0.0, 0.4, 1.0]
+    )
+    f = ChangeOfVariables.polynomial(_bernstein_cubic(0.2, 0.9), (0.0, 1.0), image=(0.0, 1.0))
+    rp = Reparametrized(curve, f)
+    np.testing.assert_allclose(f(rp.breakpoints), [0.0, 0.4, 1.0], atol=1e-14)
+    assert dg.arc_length(rp) == pytest.approx(dg.arc_length(curve), rel=1e-12)
+    s = np.linspace(0.0, dg.arc_length(curve), 9)
+    np.testing.assert_allclose(
+        dg.point_at_arc_length(rp, s), dg.point_at_arc_length(curve, s), atol=1e-11
+    )

@@ -1,0 +1,381 @@
+"""Quadratic G1 and cubic G2 Beta-splines built in Bézier form (seed 000 §10).
+
+Both constructions follow Farin and Boehm: every segment is a Bézier curve whose
+control points are placed on the legs of the Beta-spline control polygon
+``V_0 .. V_m`` so that consecutive segments satisfy the Beta-constraints of seed
+000 eq. (7.1) (and (7.2)) with the shape parameters *of that joint*.
+
+Quadratic G1 (seed 000 §10.1, eq. (15)-(19))
+    One β1 per *leg* ``V_i V_{i+1}``, ``i = 0..m-1``.  The junction vertex
+    ``J_i = (β1_i V_i + V_{i+1}) / (1 + β1_i)`` divides leg ``i`` in the ratio
+    ``1 : β1_i``; segment ``i - 1`` (``i = 1..m-1``) is ``J_{i-1}, V_i, J_i``.
+    ``m - 1`` segments; the interior joints are ``J_1 .. J_{m-2}`` (joint ``k`` is
+    on leg ``k + 1``); β1 on the end legs 0 and ``m - 1`` places the curve's end points.
+
+Cubic G2 (seed 000 §10.2, steps 1a, 1b, 2)
+    One pair ``(β1_j, β2_j)`` per *vertex* ``V_j``, ``j = 0..m``, with
+    ``γ_j = 2 (1 + β1_j) / (β2_j + 2 β1_j (1 + β1_j))`` (eq. (12.1) with ``d = 3``).
+    Leg ``i`` carries the interior Bézier vertices ``W_{i,1}, W_{i,2}`` splitting it
+    in the ratio ``γ_i : 1 : β1_{i+1}² γ_{i+1}``, and the junction vertex
+    ``J_j = (β1_j W_{j-1,2} + W_{j,1}) / (1 + β1_j)`` sits near ``V_j``.  Segment
+    ``i - 1`` (``i = 1..m-2``) is ``J_i, W_{i,1}, W_{i,2}, J_{i+1}``: ``m - 2``
+    segments; the interior joints are ``J_2 .. J_{m-2}`` (joint ``k`` at vertex
+    ``V_{k+2}``).  The parameters at ``V_0, V_1, V_{m-1}, V_m`` only shape the ends.
+
+    Seed 000 §10.2 step (1b) reads ``γ_i : 1 : β1_i² γ_{i+1}``; the correct ratio is
+    ``γ_i : 1 : β1_{i+1}² γ_{i+1}``.  The vertex ``V_{i+1}`` plays the role of
+    Farin-Boehm's point ``T`` (eq. (12.4)) for the joint at ``V_{i+1}``, where
+    ``|W_{i,2} T| = β1² γ |W_{i,1} W_{i,2}|`` with *that* joint's β1 and γ.  With one
+    global β1 the two readings coincide; with β1 varying from joint to joint the
+    seed's indices break G2 (test:
+    ``tests/unit/test_beta_splines.py::test_seed_leg_ratio_index_breaks_g2``).
+
+With β1 = 1 (and β2 = 0) both reduce to the uniform quadratic / cubic B-spline
+(test against scipy.interpolate.BSpline).
+
+Lesson: ``notebooks/04_beta_splines.ipynb``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ._validation import as_parameter_array, as_points, check_shape_parameters
+from .bezier import _bernstein
+from .curve import PiecewiseBezier
+
+__all__ = [
+    "cubic_beta_spline",
+    "cubic_beta_spline_basis",
+    "design_beta_spline",
+    "quadratic_beta_spline",
+    "quadratic_beta_spline_basis",
+]
+
+
+# ------------------------------------------------------------------ parameters
+def _per_site(value: object, name: str, n_sites: int, n_joints: int, site: str,
+              default: float, positive: bool) -> np.ndarray:
+    """Shape parameter as a scalar, one per site (leg or vertex), or one per interior joint."""
+    arr = None
+    if not isinstance(value, (str, bytes)) and value is not None:
+        try:
+            arr = np.asarray(value, dtype=float)
+        except (TypeError, ValueError):
+            arr = None
+    if arr is not None and arr.ndim == 1 and arr.size == n_joints and n_joints != n_sites:
+        b = check_shape_parameters(value, name, n_joints, positive=positive)
+        pad = (n_sites - n_joints) // 2
+        return np.concatenate([np.full(pad, default), b, np.full(pad, default)])
+    if arr is not None and arr.ndim == 1 and arr.size not in (n_sites, n_joints):
+        raise ValueError(
+            f"{name} must be a scalar, one value per interior joint ({n_joints}) or one per "
+            f"{site} ({n_sites}); got {arr.size}"
+        )
+    out = check_shape_parameters(value, name, n_sites, positive=positive)
+    return out
+
+
+def _gammas(b1: np.ndarray, b2: np.ndarray) -> np.ndarray:
+    """γ_j of seed 000 eq. (12.1) with d = 3, with a ValueError naming the vertex if undefined."""
+    den = b2 + 2 * b1 * (1 + b1)
+    bad = np.abs(den) <= 1e-12 * np.maximum(1.0, np.abs(b2))
+    if np.any(bad):
+        j = int(np.argmax(bad))
+        raise ValueError(
+            f"beta2 makes gamma undefined at vertex V_{j}: beta2 = {b2[j]} = "
+            f"-2 beta1 (1 + beta1) (seed 000 eq. (12.1) with d = 3)"
+        )
+    return 2 * (1 + b1) / den
+
+
+# ------------------------------------------------------------- constructions
+def _quadratic_polygons(V: np.ndarray, b1: np.ndarray) -> np.ndarray:
+    """Segments (m-1, 3, D) of the quadratic G1 Beta-spline; b1 one per leg (m values)."""
+    J = (b1[:, None] * V[:-1] + V[1:]) / (1 + b1)[:, None]  # J_i on leg i
+    S = V.shape[0] - 2
+    out = np.empty((S, 3, V.shape[1]))
+    out[:, 0] = J[:-1]
+    out[:, 1] = V[1:-1]
+    out[:, 2] = J[1:]
+    return out
+
+
+def _cubic_points(V: np.ndarray, b1: np.ndarray, b2: np.ndarray, seed_indexing: bool = False):
+    """Interior vertices W1, W2 (m, D) per leg and junctions J (m-1, D) at V_1..V_{m-1}.
+
+    ``seed_indexing=True`` uses the transcribed ratio γ_i : 1 : β1_i² γ_{i+1} (wrong).
+    """
+    g = _gammas(b1, b2)
+    far = (b1[:-1] if seed_indexing else b1[1:]) ** 2 * g[1:]  # the W_{i,2} V_{i+1} part
+    S = 1 + g[:-1] + far
+    bad = np.abs(S) <= 1e-12 * np.maximum(1.0, np.abs(g[:-1]) + np.abs(far))
+    if np.any(bad):
+        i = int(np.argmax(bad))
+        raise ValueError(
+            f"beta2 at V_{i} or V_{i + 1} makes the leg ratio gamma_{i} : 1 : "
+            f"beta1_{i + 1}^2 gamma_{i + 1} sum to zero on leg {i}; the interior Bézier "
+            "vertices are undefined"
+        )
+    W1 = ((1 + far)[:, None] * V[:-1] + g[:-1, None] * V[1:]) / S[:, None]
+    W2 = (far[:, None] * V[:-1] + (1 + g[:-1])[:, None] * V[1:]) / S[:, None]
+    bj = b1[1:-1, None]
+    J = (bj * W2[:-1] + W1[1:]) / (1 + bj)
+    return W1, W2, J, g
+
+
+def _cubic_polygons_from(W1: np.ndarray, W2: np.ndarray, J: np.ndarray) -> np.ndarray:
+    S = J.shape[0] - 1
+    out = np.empty((S, 4, J.shape[1]))
+    out[:, 0] = J[:-1]
+    out[:, 1] = W1[1:-1]
+    out[:, 2] = W2[1:-1]
+    out[:, 3] = J[1:]
+    return out
+
+
+def _check_joint_tangents(A: np.ndarray, B: np.ndarray, P: np.ndarray, where, what: str):
+    """Raise if A_k = B_k (zero tangent at a junction); ``where(k)`` names the place."""
+    scale = max(float(np.max(np.abs(P))), 1.0)
+    bad = np.linalg.norm(B - A, axis=1) <= 1e-12 * scale
+    if np.any(bad):
+        k = int(np.argmax(bad))
+        raise ValueError(
+            f"the tangent vanishes at the junction vertex on {where(k)} ({what}, "
+            "e.g. coincident consecutive control points): the curve would not be regular there"
+        )
+
+
+def quadratic_beta_spline(V: np.ndarray, beta1: float | np.ndarray = 1.0) -> PiecewiseBezier:
+    """Quadratic G1 Beta-spline with one β1 per joint (seed 000 §10.1, eq. (17)-(19)).
+
+    Parameters
+    ----------
+    V : array_like of shape (m + 1, dim), ``m >= 2``
+        Control polygon; the curve has ``m - 1`` quadratic segments, segment ``i - 1``
+        using ``V_{i-1}, V_i, V_{i+1}``.
+    beta1 : float or array_like
+        ``β1 > 0``: a scalar (global); one value per leg ``V_i V_{i+1}`` (``m``
+        values, the seed's ``β1_0 .. β1_{m-1}``; legs 0 and ``m - 1`` carry the curve's
+        end points); or one per interior joint (``m - 2`` values, the end legs use 1).
+
+    Returns
+    -------
+    PiecewiseBezier
+        ``info``: ``beta1`` (per interior joint), ``beta1_legs``, ``junction_points``
+        (``J_0 .. J_{m-1}``), ``interior_points`` (``V_1 .. V_{m-1}``).
+
+    Raises
+    ------
+    ValueError
+        Fewer than 3 points, β1 <= 0 or wrong length (naming the joint), coincident
+        consecutive control points (zero tangent at a junction).
+    """
+    P = as_points(V, "V", min_points=3)
+    m = P.shape[0] - 1
+    b1 = _per_site(beta1, "beta1", m, m - 2, "leg V_i V_(i+1)", 1.0, True)
+    _check_joint_tangents(P[:-1], P[1:], P, lambda k: f"leg {k}", "V_k = V_(k+1)")
+    segs = _quadratic_polygons(P, b1)
+    J = np.vstack([segs[:, 0], segs[-1:, 2]])
+    info = {
+        "beta1": b1[1:-1].copy(),
+        "beta1_legs": b1,
+        "junction_points": J,
+        "interior_points": P[1:-1].copy(),
+    }
+    return PiecewiseBezier._fast(list(segs), info=info)
+
+
+def cubic_beta_spline(
+    V: np.ndarray, beta1: float | np.ndarray = 1.0, beta2: float | np.ndarray = 0.0
+) -> PiecewiseBezier:
+    """Cubic G2 Beta-spline with one (β1, β2) per joint (seed 000 §10.2, steps 1a, 1b, 2).
+
+    Parameters
+    ----------
+    V : array_like of shape (m + 1, dim), ``m >= 3``
+        Control polygon; ``m - 2`` cubic segments, segment ``i - 1`` using
+        ``V_{i-1} .. V_{i+2}``.
+    beta1, beta2 : float or array_like
+        A scalar (global); one value per control vertex (``m + 1`` values, the seed's
+        ``β_{·0} .. β_{·m}``); or one per interior joint (``m - 3`` values, at
+        ``V_2 .. V_{m-2}``; the four end vertices use β1 = 1, β2 = 0).  ``β1 > 0``;
+        ``β2 != -2 β1 (1 + β1)`` (else γ is undefined).
+
+    Returns
+    -------
+    PiecewiseBezier
+        ``info``: ``beta1``, ``beta2`` (per interior joint), ``beta1_vertices``,
+        ``beta2_vertices``, ``gamma`` (per vertex), ``junction_points``
+        (``J_1 .. J_{m-1}``), ``interior_points`` (``(m, 2, dim)``: ``W_{i,1}, W_{i,2}``
+        on every leg).
+
+    Raises
+    ------
+    ValueError
+        Fewer than 4 points; β1 <= 0, undefined γ, or wrong lengths (naming the
+        vertex/joint); a zero tangent at a junction vertex.
+    """
+    P = as_points(V, "V", min_points=4)
+    m = P.shape[0] - 1
+    b1 = _per_site(beta1, "beta1", m + 1, m - 3, "control vertex", 1.0, True)
+    b2 = _per_site(beta2, "beta2", m + 1, m - 3, "control vertex", 0.0, False)
+    W1, W2, J, g = _cubic_points(P, b1, b2)
+    _check_joint_tangents(
+        W2[:-1], W1[1:], P, lambda k: f"vertex V_{k + 1}", "W_(j-1),2 = W_j,1"
+    )
+    segs = _cubic_polygons_from(W1, W2, J)
+    info = {
+        "beta1": b1[2:-2].copy(),
+        "beta2": b2[2:-2].copy(),
+        "beta1_vertices": b1,
+        "beta2_vertices": b2,
+        "gamma": g,
+        "junction_points": J,
+        "interior_points": np.stack([W1, W2], axis=1),
+    }
+    return PiecewiseBezier._fast(list(segs), info=info)
+
+
+# ------------------------------------------------------------------ bases
+def _basis(segs: np.ndarray, t: object) -> np.ndarray:
+    """Evaluate linear-map segments (S, d+1, n) at global parameters t in [0, S]."""
+    tt, scalar = as_parameter_array(t, "t")
+    S = segs.shape[0]
+    if np.any((tt < 0) | (tt > S)):
+        bad = tt[(tt < 0) | (tt > S)][0]
+        raise ValueError(f"t must lie in the domain [0, {S}]; got {bad}")
+    idx = np.minimum(np.floor(tt).astype(np.intp), S - 1)
+    u = tt - idx
+    B = _bernstein(segs.shape[1] - 1, u)
+    out = np.einsum("md,mdk->mk", B, segs[idx])
+    return out[0] if scalar else out
+
+
+def _check_n_points(n_points: object, minimum: int) -> int:
+    from ._validation import check_integer
+
+    return check_integer(n_points, "n_points", minimum=minimum)
+
+
+def quadratic_beta_spline_basis(
+    n_points: int, beta1: float | np.ndarray, t: float | np.ndarray
+) -> np.ndarray:
+    """The G1 quadratic Beta-spline blending functions ``b_k(t)``, ``k = 0..n_points-1``.
+
+    Built by applying :func:`quadratic_beta_spline` to unit control vectors (the
+    construction is linear in ``V``), evaluated in the global parameter
+    ``t in [0, n_points - 2]`` (segment ``s`` on ``[s, s+1]``).
+
+    Returns
+    -------
+    ndarray of shape (n_points,) or (len(t), n_points)
+    """
+    n = _check_n_points(n_points, 3)
+    m = n - 1
+    b1 = _per_site(beta1, "beta1", m, m - 2, "leg V_i V_(i+1)", 1.0, True)
+    return _basis(_quadratic_polygons(np.eye(n), b1), t)
+
+
+def cubic_beta_spline_basis(
+    n_points: int,
+    beta1: float | np.ndarray,
+    beta2: float | np.ndarray,
+    t: float | np.ndarray,
+) -> np.ndarray:
+    """The G2 cubic Beta-spline blending functions, ``t in [0, n_points - 3]``.
+
+    Returns
+    -------
+    ndarray of shape (n_points,) or (len(t), n_points)
+    """
+    n = _check_n_points(n_points, 4)
+    m = n - 1
+    b1 = _per_site(beta1, "beta1", m + 1, m - 3, "control vertex", 1.0, True)
+    b2 = _per_site(beta2, "beta2", m + 1, m - 3, "control vertex", 0.0, False)
+    W1, W2, J, _ = _cubic_points(np.eye(n), b1, b2)
+    return _basis(_cubic_polygons_from(W1, W2, J), t)
+
+
+# ------------------------------------------------------------------ design
+def design_beta_spline(V: np.ndarray, interior: np.ndarray) -> PiecewiseBezier:
+    """Cubic G2 Beta-spline from its polygon and the interior Bézier vertices (seed 000 §10.3).
+
+    The designer places ``W_{i,1}, W_{i,2}`` on each leg ``V_i V_{i+1}`` (in that
+    order, strictly inside).  With ``a_i = |V_i W_{i,1}| / |W_{i,1} W_{i,2}|`` and
+    ``c_i = |W_{i,2} V_{i+1}| / |W_{i,1} W_{i,2}|`` the leg ratios of
+    :func:`cubic_beta_spline` give, at each vertex ``V_j``, ``j = 1..m-1``::
+
+        γ_j = a_j,   β1_j = sqrt(c_{j-1} / a_j),   β2_j = 2 (1 + β1_j) (1/γ_j - β1_j),
+
+    and the junction vertices follow from step (2).
+
+    Parameters
+    ----------
+    V : array_like of shape (m + 1, dim), ``m >= 3``
+    interior : array_like of shape (m, 2, dim)
+        ``interior[i] = (W_{i,1}, W_{i,2})`` on leg ``i``.
+
+    Returns
+    -------
+    PiecewiseBezier
+        The same curve as ``cubic_beta_spline`` with the recovered parameters.
+        ``info``: ``beta1``, ``beta2`` (interior joints), ``beta1_vertices``,
+        ``beta2_vertices``, ``gamma`` (at ``V_1 .. V_{m-1}``), ``junction_points``,
+        ``interior_points``.
+
+    Raises
+    ------
+    ValueError
+        Wrong shapes, or an interior vertex off its leg, outside it, out of order or
+        coincident with its neighbour (naming the leg).
+    """
+    P = as_points(V, "V", min_points=4)
+    m = P.shape[0] - 1
+    try:
+        Wi = np.asarray(interior, dtype=float)
+    except (TypeError, ValueError):
+        raise TypeError("interior must be an array of points of shape (m, 2, dim)") from None
+    if Wi.shape != (m, 2, P.shape[1]):
+        raise ValueError(
+            f"interior must have shape ({m}, 2, {P.shape[1]}): two points on each of the {m} "
+            f"legs; got {Wi.shape}"
+        )
+    if not np.all(np.isfinite(Wi)):
+        raise ValueError("interior must contain only finite values")
+    leg = P[1:] - P[:-1]
+    L2 = np.einsum("id,id->i", leg, leg)
+    scale = max(float(np.max(np.abs(P))), 1.0)
+    for i in range(m):
+        if L2[i] <= (1e-12 * scale) ** 2:
+            raise ValueError(f"leg {i} has zero length (V_{i} = V_{i + 1}); no direction")
+    s = np.einsum("ikd,id->ik", Wi - P[:-1, None], leg) / L2[:, None]
+    off = np.linalg.norm(Wi - (P[:-1, None] + s[..., None] * leg[:, None]), axis=2)
+    for i in range(m):
+        if np.max(off[i]) > 1e-9 * np.sqrt(L2[i]):
+            raise ValueError(f"interior[{i}] must lie on leg {i} (V_{i} V_{i + 1}); it is off it")
+        if not (0.0 < s[i, 0] < s[i, 1] < 1.0):
+            raise ValueError(
+                f"interior[{i}] must satisfy V_{i}, W_{i},1, W_{i},2, V_{i + 1} in this order "
+                f"with W_{i},1 != W_{i},2 (relative positions {s[i, 0]:.3g}, {s[i, 1]:.3g})"
+            )
+    mid = s[:, 1] - s[:, 0]
+    a = s[:, 0] / mid
+    c = (1 - s[:, 1]) / mid
+    g = a[1:]  # γ at V_1 .. V_{m-1}
+    b1 = np.sqrt(c[:-1] / g)
+    b2 = 2 * (1 + b1) * (1 / g - b1)
+    W1, W2 = Wi[:, 0], Wi[:, 1]
+    bj = b1[:, None]
+    J = (bj * W2[:-1] + W1[1:]) / (1 + bj)
+    segs = _cubic_polygons_from(W1, W2, J)
+    info = {
+        "beta1": b1[1:-1].copy(),
+        "beta2": b2[1:-1].copy(),
+        "beta1_vertices": b1,
+        "beta2_vertices": b2,
+        "gamma": g,
+        "junction_points": J,
+        "interior_points": Wi,
+    }
+    return PiecewiseBezier._fast(list(segs), info=info)

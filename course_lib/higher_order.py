@@ -1,0 +1,219 @@
+"""G^n Beta-splines of degree n + 1 with global shape parameters (seed 001 Example 2.1).
+
+Segment ``j`` of the spline is ``q_j(u) = sum_{k=0}^{d} V_{j+k} b_k(u)``, ``d = n + 1``
+(seed 001 eq. (2.8) writes ``k = -2..2`` for the quartic; here the offsets run
+``0..d``, so ``b_k`` here is the seed's ``b_{k-2}``).  The control point ``V_{j+k}``
+has weight ``b_k`` in segment ``j`` and ``b_{k-1}`` in segment ``j + 1``.  The joint
+between them is G^n with shape parameters ``β_1 .. β_n`` (seed 000 eq. (6)) for every
+control polygon iff, for every ``k = 0..d+1`` (with ``b_{-1} = b_{d+1} = 0``),
+
+.. math:: b_{k-1}^{(i)}(0) = CR_i\\big(b_k^{(1)}(1), \\dots, b_k^{(i)}(1); β\\big),
+          \\quad i = 0..n
+
+(``CR_0`` is the identity: positional continuity).  These ``(d+2)(n+1)`` linear
+equations in the ``(d+1)^2`` Bernstein coefficients of ``b_0..b_d`` leave one degree
+of freedom, fixed by the normalization ``sum_k b_k(0) = 1``; the result is a
+partition of unity (tested).  The system is solved numerically (numpy SVD).
+
+Seed 001 eq. (2.10) reads ``b_{k+1}^{(i)}(1) = CR_i(b_k^{(1)}(0), ..., b_k^{(i)}(0), β)``:
+it applies the chain rule to the derivatives at ``u = 0`` and equates them to those at
+``u = 1``, i.e. it swaps the roles of the two segments.  That system also produces a
+G^n spline, but its joints satisfy seed 000 eq. (7) with the shape parameters of the
+*inverse* change of variables (``1/β1``, ``-β2/β1³``, ...), not with the given ones
+(tests: ``tests/unit/test_higher_order.py::test_seed_eq_2_10_gives_inverse_betas``).
+The seed's eq. (2.9) for the C^3 B-spline is correct as printed.
+
+With ``β1 = 1, β2 = ... = βn = 0`` the basis is the uniform B-spline of degree
+``n + 1`` (test against scipy).  For ``n = 1, 2`` it coincides with the geometric
+constructions of :mod:`course_lib.beta_splines` (independent cross-check).
+
+Lesson: ``notebooks/05_higher_order.ipynb``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+from math import comb, factorial
+
+import numpy as np
+
+from ._validation import as_parameter_array, as_points, check_integer
+from .beta_constraints import beta_coefficients
+from .bezier import _bernstein, _derivative_points
+from .curve import PiecewiseBezier
+
+__all__ = ["BetaSplineBasis", "beta_spline", "gn_beta_spline_basis", "quartic_beta_spline"]
+
+
+def _end_rows(d: int, n: int, end: int) -> np.ndarray:
+    """Matrix (n+1, d+1): Bernstein coefficients -> derivatives 0..n at u = end."""
+    E = np.zeros((n + 1, d + 1))
+    for i in range(n + 1):
+        f = factorial(d) / factorial(d - i)
+        for j in range(i + 1):
+            col = j if end == 0 else d - i + j
+            E[i, col] = f * (-1) ** (i - j) * comb(i, j)
+    return E
+
+
+def _check_betas(betas: object, n: int) -> tuple[float, ...]:
+    arr, scalar = as_parameter_array(betas, "betas")
+    if scalar or arr.size != n:
+        raise ValueError(
+            f"betas must be a sequence (beta1, ..., beta{n}) of {n} global shape parameters "
+            f"for G^{n}; got {arr.size} value(s)"
+        )
+    if arr[0] <= 0:
+        raise ValueError(f"beta1 must be > 0; got {arr[0]}")
+    return tuple(float(x) for x in arr)
+
+
+@lru_cache(maxsize=128)
+def _solve(n: int, betas: tuple[float, ...], seed_eq_2_10: bool = False) -> np.ndarray:
+    d = n + 1
+    M = np.zeros((n + 1, n + 1))
+    M[0, 0] = 1.0
+    M[1:, 1:] = beta_coefficients(np.array(betas))
+    E0, E1 = _end_rows(d, n, 0), _end_rows(d, n, 1)
+    N = d + 1  # number of basis functions
+    rows = []
+    for k in range(d + 2):  # pair (b_{k-1} on the right segment, b_k on the left)
+        A = np.zeros((n + 1, N * N))
+        if k - 1 >= 0:
+            if seed_eq_2_10:  # b_k^{(i)}(1) = CR_i(b_{k-1}(0)): seed 001 eq. (2.10)
+                A[:, (k - 1) * N : k * N] -= M @ E0
+            else:
+                A[:, (k - 1) * N : k * N] += E0
+        if k <= d:
+            if seed_eq_2_10:
+                A[:, k * N : (k + 1) * N] += E1
+            else:
+                A[:, k * N : (k + 1) * N] -= M @ E1
+        rows.append(A)
+    A = np.vstack(rows)
+    _, s, Vt = np.linalg.svd(A)
+    tol = 1e-10 * s[0]
+    if s[-2] <= tol:
+        raise ValueError(
+            f"the shape parameters betas = {betas} admit more than one G^{n} basis of "
+            f"degree {d} (singular system); choose other values"
+        )
+    x = Vt[-1].reshape(N, N)
+    total = x[:, 0].sum()
+    if abs(total) <= 1e-10 * np.abs(x).max():
+        raise ValueError(
+            f"the shape parameters betas = {betas} make the normalization sum_k b_k(0) = 1 "
+            "impossible (the blending functions would sum to zero)"
+        )
+    C = x / total
+    C.setflags(write=False)
+    return C
+
+
+@dataclass(frozen=True)
+class BetaSplineBasis:
+    """The ``d + 1 = n + 2`` blending functions of a G^n Beta-spline of degree ``n + 1``.
+
+    Attributes
+    ----------
+    n : int
+        Order of geometric continuity.
+    betas : tuple of float
+        Global shape parameters ``β_1 .. β_n``.
+    coefficients : ndarray of shape (n + 2, n + 2)
+        Row ``k`` holds the Bernstein coefficients of ``b_k`` (offset ``k``; the seed's
+        ``b_{k - (n+1)//2}`` for even degree, e.g. ``b_{-2}..b_2`` for the quartic).
+    """
+
+    n: int
+    betas: tuple[float, ...]
+    coefficients: np.ndarray
+
+    @property
+    def degree(self) -> int:
+        return self.n + 1
+
+    def evaluate(self, u: float | np.ndarray, order: int = 0) -> np.ndarray:
+        """``b_k^{(order)}(u)`` for ``k = 0..d``: shape ``(d + 1,)`` or ``(m, d + 1)``."""
+        order = check_integer(order, "order", minimum=0)
+        uu, scalar = as_parameter_array(u, "u")
+        Q = np.stack([_derivative_points(c[:, None], order)[:, 0] for c in self.coefficients])
+        out = _bernstein(Q.shape[1] - 1, uu) @ Q.T
+        return out[0] if scalar else out
+
+    def bump(self, t: float | np.ndarray) -> np.ndarray:
+        """The single blending function ``N(t)`` with support ``[0, d + 1]``.
+
+        On ``[s, s + 1]`` it equals ``b_{d-s}(t - s)`` (the weight of one control
+        vertex in the successive segments); zero outside.
+        """
+        tt, scalar = as_parameter_array(t, "t")
+        d = self.degree
+        s = np.clip(np.floor(tt).astype(np.intp), 0, d)
+        B = _bernstein(d, np.clip(tt - s, 0.0, 1.0))
+        out = np.einsum("mr,mr->m", B, self.coefficients[d - s])
+        out[(tt < 0) | (tt > d + 1)] = 0.0
+        return out[0] if scalar else out
+
+
+def gn_beta_spline_basis(n: int, betas: object) -> BetaSplineBasis:
+    """Blending functions of the G^n Beta-spline of degree ``n + 1`` (seed 001 Ex. 2.1).
+
+    Parameters
+    ----------
+    n : int
+        ``n >= 1`` (``n = 3``: the quartic Beta-spline of seed 001).
+    betas : sequence of n floats
+        Global ``β_1 > 0, β_2, ..., β_n``.
+
+    Raises
+    ------
+    ValueError
+        Wrong number of betas, β1 <= 0, or betas for which the basis is not unique
+        or cannot be normalized.
+    """
+    n = check_integer(n, "n", minimum=1)
+    b = _check_betas(betas, n)
+    return BetaSplineBasis(n, b, _solve(n, b))
+
+
+def beta_spline(V: np.ndarray, betas: object, n: int = 3) -> PiecewiseBezier:
+    """G^n Beta-spline curve of degree ``n + 1`` with global shape parameters.
+
+    Parameters
+    ----------
+    V : array_like of shape (N, dim), ``N >= n + 2``
+        Control polygon; segment ``j`` uses ``V_j .. V_{j+n+1}`` (``N - n - 1`` segments).
+    betas : sequence of n floats
+    n : int
+
+    Returns
+    -------
+    PiecewiseBezier
+        ``info``: ``beta1 .. beta{n}`` (arrays, one value per interior joint), ``betas``.
+    """
+    n = check_integer(n, "n", minimum=1)
+    basis = gn_beta_spline_basis(n, betas)
+    d = n + 1
+    P = as_points(V, "V", min_points=d + 1)
+    win = np.lib.stride_tricks.sliding_window_view(P, d + 1, axis=0)  # (S, dim, d+1)
+    segs = np.einsum("kr,sdk->srd", basis.coefficients, win)
+    S = segs.shape[0]
+    info: dict[str, object] = {f"beta{i + 1}": np.full(S - 1, b) for i, b in enumerate(basis.betas)}
+    info["betas"] = basis.betas
+    scale = max(float(np.max(np.abs(P))), 1.0)
+    for j in range(S - 1):
+        if np.linalg.norm(segs[j, -1] - segs[j, -2]) <= 1e-12 * scale:
+            raise ValueError(
+                f"the tangent vanishes at joint {j} (control points V_{j}..V_{j + d + 1}, e.g. "
+                "coincident consecutive ones): the curve would not be regular there"
+            )
+    return PiecewiseBezier._fast(list(segs), info=info)
+
+
+def quartic_beta_spline(
+    V: np.ndarray, beta1: float = 1.0, beta2: float = 0.0, beta3: float = 0.0
+) -> PiecewiseBezier:
+    """The quartic G3 Beta-spline of seed 001 Example 2.1 (global β1, β2, β3)."""
+    return beta_spline(V, (beta1, beta2, beta3), 3)

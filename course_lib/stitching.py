@@ -1,0 +1,233 @@
+"""Stitching two Bézier curves with G1 or G2 continuity (seed 000 §8, eq. (9)-(12)).
+
+The left curve ``q`` has the control polygon ``V_0 .. V_d``; the right curve ``r``
+has ``W_0 .. W_d`` (same degree ``d >= 2``).  Putting the Bézier end derivatives
+(seed 000 eq. (8.1)-(8.3)) into the Beta-constraints (eq. (7.1)-(7.2)) fixes
+
+* ``W_0 = V_d`` (G0) and ``W_1 = V_d + β1 (V_d - V_{d-1})`` (G1, eq. (9), (10)),
+* ``W_2 = 2 W_1 - W_0 + β1² (V_{d-2} - 2 V_{d-1} + V_d) + β2 (V_d - V_{d-1}) / (d - 1)``
+  (G2, eq. (11a); expanded in eq. (11b)),
+
+and leaves ``W_2 .. W_d`` (G1) or ``W_3 .. W_d`` (G2) free.  Farin and Boehm's
+construction (eq. (12.1)-(12.5)) produces the same ``W_2`` through an auxiliary
+point ``T`` on the line ``V_{d-2} V_{d-1}``:
+``T = V_{d-1} + β1² γ (V_{d-1} - V_{d-2})`` and ``W_2 = W_1 + (W_1 - T) / γ`` with
+``γ = (d-1)(1+β1) / (β2 + β1 (d-1)(1+β1))``.  The transcription of eq. (12.1)-(12.5)
+is correct: expanding it gives eq. (11b) exactly (sympy proof:
+``tests/unit/test_stitching.py::test_farin_boehm_factorizes_eq_11b_symbolically``).
+
+Lesson: ``notebooks/04_beta_splines.ipynb``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ._validation import as_points, check_finite_scalar, check_integer, check_positive
+from .curve import PiecewiseBezier
+
+__all__ = [
+    "FarinBoehm",
+    "farin_boehm",
+    "farin_boehm_gamma",
+    "g1_stitch",
+    "g1_stitch_points",
+    "g2_stitch",
+    "g2_stitch_points",
+]
+
+
+def _check_regular_end(V: np.ndarray, name: str) -> None:
+    """The direction V_{d-1} -> V_d is needed: reject coincident last two points."""
+    scale = max(float(np.max(np.abs(V))), 1.0)
+    if np.linalg.norm(V[-1] - V[-2]) <= 1e-12 * scale:
+        raise ValueError(
+            f"{name}[-2] and {name}[-1] coincide: the end tangent q'(1) = d (V_d - V_(d-1)) "
+            "vanishes, so the joint has no tangent direction to continue (G1 needs a regular q)"
+        )
+
+
+def _polygon(V: object, name: str = "V", min_points: int = 3) -> np.ndarray:
+    P = as_points(V, name, min_points=min_points)
+    _check_regular_end(P, name)
+    return P
+
+
+def g1_stitch_points(V: np.ndarray, beta1: float) -> np.ndarray:
+    """``W_0, W_1`` that make ``r`` continue ``q`` with G1 for shape parameter ``beta1``.
+
+    Seed 000 eq. (10.1)-(10.2): ``W_0 = V_d``, ``W_1 = W_0 + β1 (V_d - V_{d-1})``.
+
+    Parameters
+    ----------
+    V : array_like of shape (d + 1, dim)
+        Control polygon of the left curve ``q``, ``d >= 2``.
+    beta1 : float
+        ``β1 > 0``.
+
+    Returns
+    -------
+    ndarray of shape (2, dim)
+    """
+    P = _polygon(V)
+    b1 = check_positive(beta1, "beta1")
+    return np.array([P[-1], P[-1] + b1 * (P[-1] - P[-2])])
+
+
+def g2_stitch_points(V: np.ndarray, beta1: float, beta2: float) -> np.ndarray:
+    """``W_0, W_1, W_2`` for G2 continuity with ``β1, β2`` (seed 000 eq. (9), (11a)).
+
+    Defined for every real ``β2`` (eq. (11a) has no denominator besides ``d - 1``).
+
+    Returns
+    -------
+    ndarray of shape (3, dim)
+    """
+    P = _polygon(V)
+    b1 = check_positive(beta1, "beta1")
+    b2 = check_finite_scalar(beta2, "beta2")
+    return _g2_points(P, b1, b2)
+
+
+def _g2_points(P: np.ndarray, b1: float, b2: float) -> np.ndarray:
+    d = P.shape[0] - 1
+    W0 = P[-1]
+    W1 = W0 + b1 * (P[-1] - P[-2])
+    W2 = 2 * W1 - W0 + b1**2 * (P[-3] - 2 * P[-2] + P[-1]) + b2 * (P[-1] - P[-2]) / (d - 1)
+    return np.array([W0, W1, W2])
+
+
+def _rest(W_rest: object, count: int, dim: int, what: str) -> np.ndarray:
+    if W_rest is None:
+        if count:
+            raise ValueError(
+                f"W_rest must give the {count} free control point(s) of r left by {what}; got None"
+            )
+        return np.zeros((0, dim))
+    R = np.asarray(W_rest, dtype=float)
+    if R.size == 0 and count == 0:
+        return np.zeros((0, dim))
+    R = as_points(W_rest, "W_rest", min_points=1)
+    if R.shape[0] != count or R.shape[1] != dim:
+        raise ValueError(
+            f"W_rest must have shape ({count}, {dim}) (the free points of r after {what}, "
+            f"same degree and dimension as V); got {R.shape}"
+        )
+    return R
+
+
+def g1_stitch(V: np.ndarray, beta1: float, W_rest: np.ndarray) -> PiecewiseBezier:
+    """Two-segment curve ``q, r`` meeting with G1 (seed 000 eq. (9)-(10)).
+
+    Parameters
+    ----------
+    V : array_like of shape (d + 1, dim)
+        Control polygon of ``q``, ``d >= 2``.
+    beta1 : float
+        ``β1 > 0``.
+    W_rest : array_like of shape (d - 1, dim)
+        The free control points ``W_2 .. W_d`` of ``r``.
+
+    Returns
+    -------
+    PiecewiseBezier
+        ``info``: ``beta1`` (one value), ``W01`` (the constructed ``W_0, W_1``).
+    """
+    P = _polygon(V)
+    W = g1_stitch_points(P, beta1)
+    R = _rest(W_rest, P.shape[0] - 2, P.shape[1], "G1 fixed W_0, W_1")
+    info = {"beta1": np.array([float(beta1)]), "W01": W}
+    return PiecewiseBezier._fast([P, np.vstack([W, R])], info=info)
+
+
+def g2_stitch(
+    V: np.ndarray, beta1: float, beta2: float, W_rest: np.ndarray | None = None
+) -> PiecewiseBezier:
+    """Two-segment curve ``q, r`` meeting with G2 (seed 000 eq. (9), (11a)).
+
+    Parameters
+    ----------
+    W_rest : array_like of shape (d - 2, dim)
+        The free points ``W_3 .. W_d`` (``None`` or empty for ``d = 2``).
+
+    Returns
+    -------
+    PiecewiseBezier
+        ``info``: ``beta1``, ``beta2`` (one value each), ``W012``.
+    """
+    P = _polygon(V)
+    W = g2_stitch_points(P, beta1, beta2)
+    R = _rest(W_rest, P.shape[0] - 3, P.shape[1], "G2 fixed W_0, W_1, W_2")
+    info = {"beta1": np.array([float(beta1)]), "beta2": np.array([float(beta2)]), "W012": W}
+    return PiecewiseBezier._fast([P, np.vstack([W, R])], info=info)
+
+
+def farin_boehm_gamma(beta1: float, beta2: float, d: int = 3, *, joint: int | None = None) -> float:
+    """``γ = (d-1)(1+β1) / (β2 + β1 (d-1)(1+β1))`` (seed 000 eq. (12.1)).
+
+    Raises
+    ------
+    ValueError
+        If ``β1 <= 0``, or ``β2 = -β1 (d-1)(1+β1)`` (denominator zero: γ undefined;
+        the message names ``beta2`` and, if given, the joint).
+    """
+    at = "" if joint is None else f" at joint {joint}"
+    b1 = check_finite_scalar(beta1, "beta1")
+    if b1 <= 0:
+        raise ValueError(f"beta1 must be > 0{at}; got {b1}")
+    b2 = check_finite_scalar(beta2, "beta2")
+    d = check_integer(d, "d", minimum=2)
+    den = b2 + b1 * (d - 1) * (1 + b1)
+    if abs(den) <= 1e-12 * max(1.0, abs(b2), b1 * (d - 1) * (1 + b1)):
+        raise ValueError(
+            f"beta2 = {b2}{at} makes gamma undefined: beta2 + beta1 (d-1)(1+beta1) = 0 "
+            f"(seed 000 eq. (12.1)); choose beta2 != {-b1 * (d - 1) * (1 + b1)}"
+        )
+    return (d - 1) * (1 + b1) / den
+
+
+@dataclass(frozen=True)
+class FarinBoehm:
+    """Result of :func:`farin_boehm`: ``W`` = ``(W_0, W_1, W_2)``, the point ``T``, ``gamma``."""
+
+    W: np.ndarray
+    T: np.ndarray
+    gamma: float
+
+
+def farin_boehm(V_last3: np.ndarray, beta1: float, beta2: float, d: int) -> FarinBoehm:
+    """Farin-Boehm construction of ``W_0, W_1, W_2`` (seed 000 eq. (12.1)-(12.5)).
+
+    Parameters
+    ----------
+    V_last3 : array_like of shape (3, dim)
+        ``V_{d-2}, V_{d-1}, V_d`` of the left curve.
+    beta1, beta2 : float
+        Shape parameters, ``β1 > 0``.
+    d : int
+        Degree of both curves (``>= 2``).
+
+    Returns
+    -------
+    FarinBoehm
+        ``T = V_{d-1} + β1² γ (V_{d-1} - V_{d-2})``, ``W_2 = W_1 + (W_1 - T)/γ``.
+
+    Raises
+    ------
+    ValueError
+        If ``β1 <= 0``, ``γ`` is undefined (see :func:`farin_boehm_gamma`), or
+        ``V_{d-1} = V_d``.
+    """
+    P = as_points(V_last3, "V_last3", min_points=3)
+    if P.shape[0] != 3:
+        raise ValueError(f"V_last3 must hold exactly 3 points V_(d-2), V_(d-1), V_d; got {P.shape[0]}")
+    _check_regular_end(P, "V_last3")
+    b1 = check_positive(beta1, "beta1")
+    g = farin_boehm_gamma(b1, beta2, d)
+    W0 = P[2]
+    W1 = W0 + b1 * (P[2] - P[1])
+    T = P[1] + b1**2 * g * (P[1] - P[0])
+    W2 = W1 + (W1 - T) / g
+    return FarinBoehm(np.array([W0, W1, W2]), T, g)

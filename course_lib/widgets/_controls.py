@@ -1,0 +1,167 @@
+"""Standard controls of a curve demo: shape-parameter sliders, joint selector, t slider,
+knot slider, display switches, dragging.  Each control changes the state through a
+guarded callback (errors become a visible warning) and never re-creates the figure."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+
+from ._core import CurveDemoState, Demo, SliderSpec
+
+__all__ = ["assemble_curve_demo"]
+
+
+def _slider(spec: SliderSpec, value: float):
+    import ipywidgets as w
+
+    style = {"description_width": "3em"}
+    layout = w.Layout(width="22em")
+    if spec.log:
+        if spec.min <= 0:
+            raise ValueError(f"a log slider needs min > 0; {spec.name} has min {spec.min}")
+        s = w.FloatLogSlider(
+            value=float(np.clip(value, spec.min, spec.max)), base=10,
+            min=float(np.log10(spec.min)), max=float(np.log10(spec.max)),
+            step=spec.step, description=spec.description, continuous_update=True,
+            readout_format=".3g", style=style, layout=layout,
+        )
+    else:
+        s = w.FloatSlider(
+            value=float(np.clip(value, spec.min, spec.max)), min=spec.min, max=spec.max,
+            step=spec.step, description=spec.description, continuous_update=True,
+            readout_format=".3g", style=style, layout=layout,
+        )
+    s.add_class(spec.css)
+    return s
+
+
+def assemble_curve_demo(
+    demo: Demo,
+    sliders: Sequence[SliderSpec] = (),
+    *,
+    knots: bool = False,
+    draggable: bool = True,
+    extra_rows: Sequence = (),
+) -> Demo:
+    """Add the standard widgets to ``demo`` (whose state is a :class:`CurveDemoState`)."""
+    import ipywidgets as w
+
+    from .interactor import PointDragger
+
+    st: CurveDemoState = demo.state
+    rows = []
+    nj = st.n_joints
+    per_joint = any(s.per_joint for s in sliders) and nj > 1
+    if nj >= 1:
+        joint = w.Dropdown(
+            options=[(f"joint {j}", j) for j in range(nj)], value=st.joint,
+            description="joint", style={"description_width": "3em"},
+            layout=w.Layout(width="12em"),
+        )
+        joint.add_class("cl-joint")
+        demo.controls["joint"] = joint
+        if per_joint:
+            same = w.Checkbox(value=True, description="same value at every joint", indent=False)
+            same.add_class("cl-same-beta")
+            demo.controls["same"] = same
+            rows.append(w.HBox([joint, same]))
+        else:
+            rows.append(joint)
+    for spec in sliders:
+        s = _slider(spec, st.get_param(spec.name, st.joint if nj else None))
+        demo.controls[spec.name] = s
+
+        def on_value(change, spec=spec):
+            same = demo.controls.get("same")
+            j = None if (same is None or same.value or not spec.per_joint) else st.joint
+            st.set_param(spec.name, change["new"], joint=j)
+
+        s.observe(demo.guard(on_value), names="value")
+        rows.append(s)
+
+    if knots:
+        L = st.curve.n_segments
+        ksel = w.Dropdown(
+            options=[(f"t{i}", i) for i in range(1, L)], value=1, description="knot",
+            style={"description_width": "3em"}, layout=w.Layout(width="10em"),
+        )
+        kval = w.FloatSlider(description="value", readout_format=".3g",
+                             style={"description_width": "3em"}, layout=w.Layout(width="22em"),
+                             continuous_update=True)
+        kval.add_class("cl-slider-knot")
+        demo.controls["knot_index"] = ksel
+        demo.controls["knot"] = kval
+
+        def knot_bounds(i: int) -> None:
+            k = st.params["knots"]
+            gap = k[i + 1] - k[i - 1]
+            lo, hi = k[i - 1] + 0.02 * gap, k[i + 1] - 0.02 * gap
+            # set in an order that never makes min > max
+            if lo > kval.max:
+                kval.max = hi
+                kval.min = lo
+            else:
+                kval.min = lo
+                kval.max = hi
+            kval.step = gap / 200
+            kval.value = float(k[i])
+
+        demo._sync(lambda: knot_bounds(1))
+
+        def on_knot_select(change):
+            demo._sync(lambda: knot_bounds(change["new"]))
+
+        def on_knot(change):
+            st.set_param("knots", change["new"], joint=ksel.value)
+
+        ksel.observe(demo.guard(on_knot_select), names="value")
+        kval.observe(demo.guard(on_knot), names="value")
+        rows.append(w.HBox([ksel, kval]))
+
+    a, b = st.curve.domain
+    tsl = w.FloatSlider(value=st.t, min=a, max=b, step=(b - a) / 400, description="t",
+                        readout_format=".3g", continuous_update=True,
+                        style={"description_width": "3em"}, layout=w.Layout(width="22em"))
+    tsl.add_class("cl-slider-t")
+    demo.controls["t"] = tsl
+    tsl.observe(demo.guard(lambda ch: st.set_t(ch["new"])), names="value")
+    rows.append(tsl)
+
+    boxes = []
+    for key, flag, text in (
+        ("comb", "show_comb", "curvature comb"),
+        ("tangents", "show_tangents", "T and dT/ds at t"),
+        ("circle", "show_circle", "osculating circle"),
+        ("curvature", "show_curvature", "κ(s) plot"),
+    ):
+        cb = w.Checkbox(value=getattr(st, flag), description=text, indent=False,
+                        layout=w.Layout(width="auto"))
+        cb.add_class(f"cl-check-{key}")
+        cb.observe(demo.guard(lambda ch, flag=flag: st.set_flag(flag, ch["new"])), names="value")
+        demo.controls[key] = cb
+        boxes.append(cb)
+    rows.append(w.HBox(boxes[:2]))
+    rows.append(w.HBox(boxes[2:]))
+    rows.extend(extra_rows)
+
+    if nj >= 1:
+        def on_joint(change):
+            st.select_joint(change["new"])
+
+            def sync():
+                for spec in sliders:
+                    if spec.per_joint:
+                        demo.controls[spec.name].value = st.get_param(spec.name, st.joint)
+
+            demo._sync(sync)
+
+        demo.controls["joint"].observe(demo.guard(on_joint), names="value")
+
+    demo.build_widgets(rows)
+    if draggable:
+        demo.dragger = PointDragger(
+            demo.view.ax, lambda: st.points, demo.guard(st.drag),
+        )
+    return demo

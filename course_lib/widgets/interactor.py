@@ -1,0 +1,88 @@
+"""Draggable points on a matplotlib canvas (the pattern of matplotlib's ``poly_editor`` example).
+
+The interactor holds no geometry: it asks a callback for the current points, hit-tests
+the mouse in *screen pixels* (so the tolerance does not depend on zoom or units), and
+reports ``(index, x, y)`` moves to another callback that owns the geometry.  It works on
+any canvas that emits matplotlib's mouse events: ipympl in a notebook, Agg in tests
+(where events are synthesized, see ``tests/unit/test_widgets.py``).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+
+__all__ = ["PointDragger"]
+
+
+class PointDragger:
+    """Let the user drag the points returned by ``get_points`` with the left mouse button.
+
+    Parameters
+    ----------
+    ax : Axes
+        Where the points live (data coordinates of this Axes).
+    get_points : callable ``() -> ndarray (n, 2)``
+        Current positions (the geometry stays with the caller).
+    on_move : callable ``(index, x, y) -> None``
+        Called on every mouse motion while point ``index`` is held.
+    on_release : callable ``(index) -> None``, optional
+        Called when the button is released after a drag.
+    tolerance : float
+        Hit radius in pixels.
+    """
+
+    def __init__(
+        self,
+        ax,
+        get_points: Callable[[], np.ndarray],
+        on_move: Callable[[int, float, float], None],
+        on_release: Callable[[int], None] | None = None,
+        tolerance: float = 10.0,
+    ) -> None:
+        self.ax = ax
+        self.get_points = get_points
+        self.on_move = on_move
+        self.on_release = on_release
+        self.tolerance = float(tolerance)
+        self.active: int | None = None
+        canvas = ax.figure.canvas
+        self._cids = [
+            canvas.mpl_connect("button_press_event", self._press),
+            canvas.mpl_connect("motion_notify_event", self._motion),
+            canvas.mpl_connect("button_release_event", self._release),
+        ]
+
+    def hit(self, x_px: float, y_px: float) -> int | None:
+        """Index of the point within ``tolerance`` pixels of ``(x_px, y_px)``, nearest first."""
+        P = np.asarray(self.get_points(), dtype=float)
+        if P.size == 0:
+            return None
+        xy = self.ax.transData.transform(P)
+        d = np.hypot(xy[:, 0] - x_px, xy[:, 1] - y_px)
+        k = int(np.argmin(d))
+        return k if d[k] <= self.tolerance else None
+
+    def _press(self, event) -> None:
+        if event.inaxes is not self.ax or event.button != 1:
+            return
+        self.active = self.hit(event.x, event.y)
+
+    def _motion(self, event) -> None:
+        if self.active is None or event.inaxes is not self.ax or event.xdata is None:
+            return
+        self.on_move(self.active, float(event.xdata), float(event.ydata))
+
+    def _release(self, event) -> None:
+        if self.active is None or event.button != 1:
+            return
+        k, self.active = self.active, None
+        if self.on_release is not None:
+            self.on_release(k)
+
+    def disconnect(self) -> None:
+        """Stop listening to the canvas."""
+        for cid in self._cids:
+            self.ax.figure.canvas.mpl_disconnect(cid)
+        self._cids = []

@@ -1,0 +1,229 @@
+"""The reparametrization demo: one curve, two parametrizations, the same geometry.
+
+``Q(u)`` is a cubic Bézier curve; ``Q~ = Q o f`` with the orientation-preserving change
+of variables ``f(v) = v + a v (1 - v)`` of ``[0, 1]`` (``f' = 1 + a (1 - 2v) > 0`` for
+``|a| < 1``; seed 000 §4, Example 2 in spirit).  Equally spaced parameter values land
+on different points and the velocity vectors differ in length, but the unit tangent
+and the curvature at a point do not (they are intrinsic).
+"""
+
+from __future__ import annotations
+
+import html
+
+import numpy as np
+
+from .._validation import as_points, check_finite_scalar
+from ._core import Demo, _widgets_available, fit_equal_limits, make_figure
+
+__all__ = ["ReparametrizationState", "reparametrization_demo"]
+
+_DEFAULT = [[0.0, 0.0], [1.0, 2.2], [3.2, 2.4], [4.0, 0.4]]
+
+
+class ReparametrizationState:
+    """State of :func:`reparametrization_demo`: control points, ``a`` (shape of ``f``), ``v``.
+
+    Raises
+    ------
+    ValueError
+        If ``|a| >= 1`` (then ``f`` is not orientation preserving), from
+        :class:`~course_lib.reparametrization.ChangeOfVariables`.
+    """
+
+    def __init__(self, points=None, a: float = 0.6, v: float = 0.3, samples: int = 11) -> None:
+        from ..curve import PiecewiseBezier
+
+        self.points = as_points(_DEFAULT if points is None else points, "points", min_points=2,
+                                dims=(2,)).copy()
+        self.curve = PiecewiseBezier([self.points])
+        self.samples = samples
+        self.v = check_finite_scalar(v, "v")
+        self.a = check_finite_scalar(a, "a")
+        self.f = self._change(self.a)
+        self.warning = ""
+        self.view = None
+        self.listeners: list = []
+        self.compute()
+
+    @staticmethod
+    def _change(a: float):
+        from ..reparametrization import ChangeOfVariables
+
+        return ChangeOfVariables.polynomial([0.0, 1.0 + a, -a], (0.0, 1.0), (0.0, 1.0))
+
+    def set_a(self, a: float) -> None:
+        """Change the shape of ``f``; raises ValueError (keeping the old ``f``) if ``|a| >= 1``."""
+        a = check_finite_scalar(a, "a")
+        self.f = self._change(a)
+        self.a = a
+        self.update()
+
+    def set_t(self, v: float) -> None:
+        self.v = float(np.clip(check_finite_scalar(v, "v"), 0.0, 1.0))
+        self.update()
+
+    def drag(self, k: int, x: float, y: float) -> None:
+        from ..curve import PiecewiseBezier
+
+        self.points[k] = (x, y)
+        self.curve = PiecewiseBezier([self.points])
+        self.update()
+
+    def compute(self) -> None:
+        from .. import differential_geometry as dg
+        from ..reparametrization import Reparametrized
+
+        self.reparametrized = Reparametrized(self.curve, self.f)
+        u = float(self.f(self.v))
+        self.u = u
+        self.warning = ""
+        try:
+            self.facts = {
+                "speed_q": dg.speed(self.curve, u),
+                "speed_r": dg.speed(self.reparametrized, self.v),
+                "fprime": float(self.f(self.v, 1)),
+                "T_q": dg.unit_tangent(self.curve, u),
+                "T_r": dg.unit_tangent(self.reparametrized, self.v),
+                "kappa_q": dg.signed_curvature(self.curve, u),
+                "kappa_r": dg.signed_curvature(self.reparametrized, self.v),
+            }
+        except ValueError as exc:
+            self.facts = {}
+            self.warning = str(exc)
+
+    def update(self) -> None:
+        self.compute()
+        if self.view is not None:
+            self.view.draw(self)
+        for f in self.listeners:
+            f(self)
+
+    def report_html(self) -> str:
+        if self.warning:
+            return (f"<p style='color:#D55E00;font-weight:bold'>⚠ {html.escape(self.warning)}</p>")
+        F = self.facts
+
+        def vec(x):
+            return f"({x[0]:.4f}, {x[1]:.4f})"
+
+        rows = [
+            ("u = f(v)", f"{self.u:.4f}  (v = {self.v:.4f})"),
+            ("speed of Q at u", f"{F['speed_q']:.4f}"),
+            ("speed of Q∘f at v", f"{F['speed_r']:.4f}"),
+            ("chain rule: f'(v) × speed of Q", f"{F['fprime'] * F['speed_q']:.4f}"),
+            ("unit tangent of Q / of Q∘f", f"{vec(F['T_q'])} / {vec(F['T_r'])}"),
+            ("curvature of Q / of Q∘f", f"{F['kappa_q']:.4f} / {F['kappa_r']:.4f}"),
+        ]
+        body = "".join(
+            f"<tr><th style='text-align:left'>{html.escape(k)}</th><td>{html.escape(v)}</td></tr>"
+            for k, v in rows
+        )
+        return f"<table class='cl-reparam-report'>{body}</table>"
+
+
+class ReparametrizationView:
+    """Left: the curve with the samples of both parametrizations and their velocity
+    vectors at the moving point; right: the graph of ``f``."""
+
+    def __init__(self, state: ReparametrizationState, static: bool) -> None:
+        from ..plotting import plot_control_polygon, plot_curve
+        from ..plotting.style import OKABE_ITO, course_style
+
+        self.state = state
+        self.fig = make_figure((10.0, 4.6), static)
+        with course_style():
+            self.ax = self.fig.add_axes((0.04, 0.08, 0.56, 0.84))
+            self.fax = self.fig.add_axes((0.70, 0.14, 0.27, 0.74))
+        self.curve_artists = plot_curve(self.ax, state.curve, points=False, joints=False,
+                                        polygon=False)
+        self.design = plot_control_polygon(self.ax, state.points, linestyle="--",
+                                           color="#6E6E6E", markersize=6)
+        blue, red = OKABE_ITO["blue"], OKABE_ITO["vermillion"]
+        (self.dots_q,) = self.ax.plot([], [], "o", ms=7, color=blue, label="Q(u), u equally spaced")
+        (self.dots_r,) = self.ax.plot([], [], "s", ms=6, mfc="white", mec=red, mew=1.8,
+                                      label="Q∘f(v), v equally spaced")
+        kw = dict(angles="xy", scale_units="xy", scale=1.0)
+        self.vel_r = self.ax.quiver([0], [0], [0], [0], color=red, label="d(Q∘f)/dv (× 1/4)",
+                                    width=0.012, zorder=6, **kw)
+        self.vel_q = self.ax.quiver([0], [0], [0], [0], color=blue, label="dQ/du (× 1/4)",
+                                    width=0.005, zorder=7, **kw)
+        (self.point,) = self.ax.plot([], [], "o", color="black", ms=8, zorder=8)
+        self.ax.set_title("one curve, two parametrizations", fontsize=13)
+        v = np.linspace(0, 1, 101)
+        (self.fline,) = self.fax.plot(v, v, color=red, lw=2.4)
+        self.fax.plot([0, 1], [0, 1], color="#999999", lw=1, ls=":")
+        (self.fpt,) = self.fax.plot([], [], "o", color="black", ms=7)
+        self.fax.set_xlim(0, 1)
+        self.fax.set_ylim(0, 1)
+        self.fax.set_aspect("equal")
+        self.fax.set_xlabel("v")
+        self.fax.set_ylabel("u = f(v)")
+        self.fax.set_title("change of variables f", fontsize=12)
+        self._scale = 0.25
+        self.draw(state)
+        fit_equal_limits(self.ax, state.points, margin=0.08, top=0.3)
+        self.ax.legend(loc="upper center", ncol=2, fontsize=10)
+        state.view = self
+
+    def draw(self, st: ReparametrizationState) -> None:
+        self.curve_artists.update(st.curve)
+        self.design.update(st.points)
+        grid = np.linspace(0.0, 1.0, st.samples)
+        pq = st.curve.evaluate(grid)
+        pr = st.reparametrized.evaluate(grid)
+        self.dots_q.set_data(pq[:, 0], pq[:, 1])
+        self.dots_r.set_data(pr[:, 0], pr[:, 1])
+        p = st.curve.evaluate(st.u)
+        self.point.set_data([p[0]], [p[1]])
+        dq = st.curve.evaluate(st.u, 1) * self._scale
+        dr = st.reparametrized.evaluate(st.v, 1) * self._scale
+        for q, d in ((self.vel_q, dq), (self.vel_r, dr)):
+            q.set_offsets([p])
+            q.set_UVC([d[0]], [d[1]])
+        v = np.linspace(0, 1, 101)
+        self.fline.set_ydata(st.f(v))
+        self.fpt.set_data([st.v], [st.u])
+        self.fig.canvas.draw_idle()
+
+
+def reparametrization_demo(
+    points=None, a: float = 0.6, v: float = 0.3, *, static: bool | None = None
+) -> Demo:
+    """Reparametrize a cubic Bézier curve by ``f(v) = v + a v(1 - v)`` and watch what changes.
+
+    Sliders: ``a`` (shape of ``f``; the range ``[-0.9, 0.9]`` keeps ``f' > 0``) and
+    ``v`` (the moving parameter, class ``cl-slider-t``); draggable control points.
+    The report compares speeds (not intrinsic: chain rule ``|Q~'| = f' |Q'|``) with
+    unit tangents and curvatures (intrinsic: equal).
+
+    Raises
+    ------
+    ValueError
+        If ``|a| >= 1`` or the points are bad.
+    """
+    static = (not _widgets_available()) if static is None else bool(static)
+    state = ReparametrizationState(points, a, v)
+    view = ReparametrizationView(state, static)
+    demo = Demo(state, view, static=static)
+    demo.name = "reparametrization"
+    if static:
+        return demo
+    import ipywidgets as w
+
+    from .interactor import PointDragger
+
+    sa = w.FloatSlider(value=state.a, min=-0.9, max=0.9, step=0.01, description="a",
+                       continuous_update=True, style={"description_width": "3em"},
+                       layout=w.Layout(width="22em"))
+    sa.add_class("cl-slider-shape")
+    sv = w.FloatSlider(value=state.v, min=0.0, max=1.0, step=0.0025, description="v",
+                       continuous_update=True, style={"description_width": "3em"},
+                       layout=w.Layout(width="22em"))
+    sv.add_class("cl-slider-t")
+    demo.controls.update(a=sa, t=sv)
+    sa.observe(demo.guard(lambda ch: state.set_a(ch["new"])), names="value")
+    sv.observe(demo.guard(lambda ch: state.set_t(ch["new"])), names="value")
+    demo.build_widgets([sa, sv])
+    demo.dragger = PointDragger(view.ax, lambda: state.points, demo.guard(state.drag))
+    return demo

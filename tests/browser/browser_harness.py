@@ -1,0 +1,253 @@
+"""Harness of the browser tests: a private JupyterLab (or Voilà) server, headless Chromium.
+
+The pytest fixtures built on it are in conftest.py.
+
+Everything a test starts is stopped by its fixture, also when the test fails:
+
+* a server on ``127.0.0.1`` at a free port (``port_retries=0``, so it never silently moves),
+  with a random token, its own root folder holding *copies* of the notebooks (JupyterLab
+  autosaves into it), its own settings, workspaces, runtime, config and IPython folders,
+  all under one temporary directory;
+* headless Debian Chromium driven by Playwright's sync API (``executable_path``; never
+  ``playwright install``), with every request to a host other than ``127.0.0.1`` aborted.
+
+Stopping sends SIGTERM to the server (it shuts its kernels down) and then checks that no
+process whose command line or working directory lies in that temporary directory is left
+(the kernels' connection files are in its runtime folder).
+
+Without Playwright or Chromium the tests are skipped with the reason (``make test`` installs
+Chromium first with ``tools/ensure-browser``).  Recipe: /work/shared/recipes/
+browser-and-notebook-testing.md.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import secrets
+import shutil
+import signal
+import socket
+import subprocess
+import sys
+import time
+import urllib.error
+import urllib.request
+from pathlib import Path
+from urllib.parse import urlsplit
+
+ROOT = Path(__file__).resolve().parents[2]
+ARTIFACTS = ROOT / "test-artifacts"
+CHROMIUM_ENV = "COURSE_CHROMIUM"  # optional override of the browser executable
+
+
+# ----------------------------------------------------------------------------- browser
+def find_chromium() -> str | None:
+    """Path of a Chromium executable: ``$COURSE_CHROMIUM``, /usr/bin/chromium or on PATH."""
+    for cand in (
+        os.environ.get(CHROMIUM_ENV),
+        "/usr/bin/chromium",
+        shutil.which("chromium"),
+        shutil.which("chromium-browser"),
+    ):
+        if cand and os.path.isfile(cand) and os.access(cand, os.X_OK):
+            return cand
+    return None
+
+
+class PageLog:
+    """Console errors, uncaught page errors and aborted outside requests of one page."""
+
+    def __init__(self) -> None:
+        self.console_errors: list[str] = []
+        self.page_errors: list[str] = []
+        self.blocked: list[str] = []
+
+    def problems(self, ignore: tuple[str, ...] = ()) -> list[str]:
+        msgs = [f"console: {m}" for m in self.console_errors] + [
+            f"pageerror: {m}" for m in self.page_errors
+        ]
+        return [m for m in msgs if not any(s in m for s in ignore)]
+
+
+def new_page(browser, *, width: int = 1400, height: int = 1000):
+    """A page in a fresh context that may only talk to 127.0.0.1; returns ``(context, page, log)``."""
+    context = browser.new_context(viewport={"width": width, "height": height},
+                                  device_scale_factor=1)
+    page = context.new_page()
+    log = PageLog()
+
+    def local_only(route):
+        host = urlsplit(route.request.url).hostname
+        if host in ("127.0.0.1", "localhost") or route.request.url.startswith(("data:", "blob:")):
+            route.continue_()
+        else:
+            log.blocked.append(route.request.url)
+            route.abort()
+
+    page.route("**/*", local_only)
+    page.on("console", lambda m: m.type == "error" and log.console_errors.append(m.text))
+    page.on("pageerror", lambda e: log.page_errors.append(str(e)))
+    return context, page, log
+
+
+# ----------------------------------------------------------------------------- servers
+def free_port() -> int:
+    with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def processes_under(path: Path) -> list[str]:
+    """``pid cmdline`` of every process whose command line or cwd mentions ``path``."""
+    key = str(path).rstrip("/") + "/"
+    found = []
+    for d in Path("/proc").iterdir():
+        if not d.name.isdigit() or int(d.name) == os.getpid():
+            continue
+        try:
+            cmd = (d / "cmdline").read_bytes().replace(b"\0", b" ").decode(errors="replace")
+        except OSError:
+            continue
+        try:
+            cwd = os.readlink(d / "cwd")
+        except OSError:
+            cwd = ""
+        if key in cmd or (cwd + "/").startswith(key):
+            found.append(f"{d.name} {cmd.strip()}")
+    return found
+
+
+class Server:
+    """A notebook server subprocess living in its own temporary directory ``base``.
+
+    ``base/root`` holds copies of the notebooks; ``base/settings``, ``base/ws``,
+    ``base/rt`` (runtime: kernel connection files), ``base/config``, ``base/ipython``
+    isolate it from the user's Jupyter set-up.
+    """
+
+    def __init__(self, kind: str, base: Path, notebooks: list[Path], *, token: str) -> None:
+        self.kind, self.base, self.token = kind, base, token
+        self.root = base / "root"
+        self.root.mkdir(parents=True)
+        for nb in notebooks:
+            shutil.copy2(nb, self.root / nb.name)
+        self.port = free_port()
+        self.url = f"http://127.0.0.1:{self.port}"
+        self.log_path = base / f"{kind}.log"
+        self.proc: subprocess.Popen | None = None
+        self.returncode: int | None = None
+        self.leftovers: list[str] = []
+
+    # -- configuration
+    def env(self) -> dict:
+        env = dict(os.environ)
+        for name, sub in (("JUPYTER_RUNTIME_DIR", "rt"), ("JUPYTER_CONFIG_DIR", "config"),
+                          ("IPYTHONDIR", "ipython"), ("MPLCONFIGDIR", "mpl")):
+            (self.base / sub).mkdir(exist_ok=True)
+            env[name] = str(self.base / sub)
+        env.pop("JUPYTER_TOKEN", None)
+        return env
+
+    def lab_command(self) -> list[str]:
+        settings = self.base / "settings"
+        for rel, content in (
+            ("@jupyterlab/apputils-extension/notification.jupyterlab-settings",
+             {"fetchNews": "false", "checkForUpdates": False}),
+            ("@jupyterlab/notebook-extension/tracker.jupyterlab-settings",
+             {"autoStartDefaultKernel": True}),
+        ):
+            f = settings / rel
+            f.parent.mkdir(parents=True, exist_ok=True)
+            f.write_text(json.dumps(content))
+        cmd = [
+            sys.executable, "-m", "jupyterlab", "--no-browser",
+            "--ServerApp.ip=127.0.0.1", f"--ServerApp.port={self.port}",
+            "--ServerApp.port_retries=0", f"--IdentityProvider.token={self.token}",
+            f"--ServerApp.root_dir={self.root}",
+            f"--LabApp.user_settings_dir={settings}",
+            f"--LabApp.workspaces_dir={self.base / 'ws'}",
+            "--LabApp.news_url=None",
+            "--LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate",
+            "--LabApp.expose_app_in_browser=True",  # window.jupyterapp: kernel probe, model
+        ]
+        if os.geteuid() == 0:
+            cmd.append("--allow-root")
+        return cmd
+
+    def voila_command(self, notebook: str) -> list[str]:
+        return [
+            sys.executable, "-m", "voila", str(self.root / notebook), "--no-browser",
+            "--Voila.ip=127.0.0.1", f"--port={self.port}", "--Voila.port_retries=0",
+            f"--Voila.token={self.token}", f"--Voila.root_dir={self.root}",
+            "--show_tracebacks=True",
+        ]
+
+    # -- life cycle
+    def start(self, cmd: list[str], timeout: float = 60.0) -> None:
+        self._log = self.log_path.open("wb")
+        self.proc = subprocess.Popen(
+            cmd, cwd=self.root, env=self.env(), stdout=self._log, stderr=subprocess.STDOUT,
+            stdin=subprocess.DEVNULL, start_new_session=True,
+        )
+        probe = "/api/status" if self.kind == "lab" else "/api/kernels"
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if self.proc.poll() is not None:
+                raise RuntimeError(f"{self.kind} server exited with {self.proc.returncode}:\n"
+                                   f"{self.log_tail()}")
+            req = urllib.request.Request(self.url + probe,
+                                         headers={"Authorization": f"token {self.token}"})
+            try:
+                with urllib.request.urlopen(req, timeout=2) as r:
+                    if r.status == 200:
+                        return
+            except (urllib.error.URLError, ConnectionError, TimeoutError):
+                pass
+            time.sleep(0.2)
+        raise RuntimeError(f"{self.kind} server not ready after {timeout} s:\n{self.log_tail()}")
+
+    def stop(self, timeout: float = 15.0) -> None:
+        """SIGTERM (the server shuts its kernels down), then wait for everything under ``base``.
+
+        Idempotent.  Anything still alive after ``timeout`` is killed and listed in
+        ``leftovers`` (the tests assert that list is empty).
+        """
+        if self.proc is None or self.returncode is not None:
+            return
+        if self.proc.poll() is None:
+            self.proc.send_signal(signal.SIGTERM)
+            try:
+                self.proc.wait(timeout)
+            except subprocess.TimeoutExpired:
+                self.proc.kill()
+                self.proc.wait(5)
+        self.returncode = self.proc.returncode
+        self._log.close()
+        deadline = time.monotonic() + timeout
+        left = processes_under(self.base)
+        while left and time.monotonic() < deadline:
+            time.sleep(0.2)
+            left = processes_under(self.base)
+        self.leftovers = left
+        for line in left:  # never leave them running, but report them
+            try:
+                os.kill(int(line.split()[0]), signal.SIGKILL)
+            except OSError:
+                pass
+
+    def log_tail(self, n: int = 40) -> str:
+        try:
+            return "\n".join(self.log_path.read_text(errors="replace").splitlines()[-n:])
+        except OSError:
+            return "(no log)"
+
+    def save_log(self, name: str) -> None:
+        ARTIFACTS.mkdir(exist_ok=True)
+        if self.log_path.exists():
+            shutil.copy2(self.log_path, ARTIFACTS / name)
+
+
+def make_server(kind: str, tmp_path_factory, notebooks: list[Path]) -> Server:
+    base = tmp_path_factory.mktemp(f"browser-{kind}-")
+    return Server(kind, base, notebooks, token=secrets.token_hex(24))

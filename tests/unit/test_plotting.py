@@ -1,0 +1,367 @@
+"""Pictures tested without pixels: the data handed to the Axes is checked against
+closed forms and independent computations (scipy quadrature, textbook end-curvature
+formulas of Bézier curves), never against numbers produced by the plotting code."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from math import comb
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import numpy as np
+import pytest
+from matplotlib.collections import LineCollection
+from matplotlib.lines import Line2D
+from scipy.integrate import quad
+
+from course_lib import PiecewiseBezier
+from course_lib.plotting import (
+    course_style,
+    new_figure,
+    plot_control_polygon,
+    plot_curvature_comb,
+    plot_curvature_profile,
+    plot_curve,
+    plot_frame,
+    plot_osculating_circle,
+)
+from course_lib.plotting.blending import blending_functions, plot_blending_functions
+from course_lib.plotting.constructions import (
+    plot_beta_spline_construction,
+    plot_farin_boehm,
+    plot_g1_stitch,
+    plot_knot_joint_construction,
+)
+from course_lib.plotting.style import OKABE_ITO, segment_color
+
+# y = x^2 for x in [-1, 1] as a quadratic Bézier curve: x(u) = 2u - 1, y = (2u - 1)^2.
+PARABOLA = PiecewiseBezier([[[-1.0, 1.0], [0.0, -1.0], [1.0, 1.0]]])
+
+
+def parabola_kappa(x):
+    """Signed curvature of y = x^2 (closed form): 2 / (1 + 4x^2)^(3/2)."""
+    return 2.0 / (1.0 + 4.0 * x**2) ** 1.5
+
+
+def bezier_end_curvature(P, end):
+    """Signed curvature at an end of a degree-d Bézier curve (Farin, *Curves and Surfaces
+    for CAGD*, §10.1): kappa(0) = (d-1)/d * (dP0 x dP1) / |dP0|^3, mirrored at u = 1."""
+    P = np.asarray(P, float)
+    d = len(P) - 1
+    if end == 0:
+        a, b = P[1] - P[0], P[2] - P[1]
+    else:
+        a, b = P[-2] - P[-3], P[-1] - P[-2]
+    cross = a[0] * b[1] - a[1] * b[0]
+    L = np.linalg.norm(a if end == 0 else b)
+    return (d - 1) / d * cross / L**3
+
+
+# Two cubics: W1 on the ray V2 V3 (G1), W2 arbitrary (not G2).
+V = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.5], [4.0, 1.0]])
+W = np.array([V[3], V[3] + 0.7 * (V[3] - V[2]), [6.5, 0.5], [8.0, 2.0]])
+G1_CURVE = PiecewiseBezier([V, W])
+
+
+@pytest.fixture
+def ax():
+    fig, ax = new_figure(pyplot=False)
+    yield ax
+    fig.clf()
+
+
+# ------------------------------------------------------------------ curves
+def test_plot_curve_segments_polygon_joints(ax):
+    c = PiecewiseBezier([[[0, 0], [1, 1], [2, 0]], [[2, 0], [3, -1], [4, 0]], [[4, 0], [5, 1]]])
+    arts = plot_curve(ax, c, per_segment=30)
+    segs = arts.segments.get_segments()
+    assert isinstance(arts.segments, LineCollection) and len(segs) == 3
+    for s, P in zip(segs, c.segments, strict=True):
+        assert s.shape == (30, 2)
+        np.testing.assert_allclose(s[0], P[0], atol=1e-12)
+        np.testing.assert_allclose(s[-1], P[-1], atol=1e-8)  # one-sided, 1e-10 before the end
+    # neighbouring segments have different colours, from the Okabe-Ito palette
+    cols = [matplotlib.colors.to_hex(c) for c in arts.segments.get_colors()]
+    assert cols[0] != cols[1] and cols[1] != cols[2]
+    assert set(map(str.upper, cols)) <= set(OKABE_ITO.values())
+    np.testing.assert_array_equal(np.column_stack(arts.joints.get_data()), [[2, 0], [4, 0]])
+    x, _y = arts.polygon.get_data()
+    assert np.isnan(x).sum() == 2  # three polygons separated by NaN
+    assert ax.get_aspect() == 1.0
+
+
+def test_plot_curve_keeps_a_gap_visible(ax):
+    c = PiecewiseBezier([[[0, 0], [1, 0]], [[1, 1], [2, 1]]])  # not even C0
+    segs = plot_curve(ax, c).segments.get_segments()
+    np.testing.assert_allclose(segs[0][-1], [1, 0], atol=1e-8)
+    np.testing.assert_allclose(segs[1][0], [1, 1])
+
+
+def test_curve_artists_update_in_place(ax):
+    arts = plot_curve(ax, PARABOLA)
+    lc = arts.segments
+    arts.update(G1_CURVE)
+    assert arts.segments is lc and len(lc.get_segments()) == 2
+    np.testing.assert_allclose(lc.get_segments()[1][0], W[0])
+
+
+def test_plot_curve_rejects_space_curves(ax):
+    c = PiecewiseBezier([[[0, 0, 0], [1, 1, 1]]])
+    with pytest.raises(ValueError, match="plane curves"):
+        plot_curve(ax, c)
+
+
+def test_plot_control_polygon_labels(ax):
+    arts = plot_control_polygon(ax, V, labels="$V_{{{i}}}$")
+    assert [t.get_text() for t in arts.labels] == [f"$V_{{{i}}}$" for i in range(4)]
+    np.testing.assert_array_equal(np.column_stack(arts.line.get_data()), V)
+
+
+# ------------------------------------------------------------------ comb
+def test_comb_teeth_are_normal_and_proportional_to_curvature(ax):
+    arts = plot_curvature_comb(ax, PARABOLA, samples=101, scale=0.5)
+    teeth = arts.tooth_array()
+    feet, tips = teeth[:, 0], teeth[:, 1]
+    x = feet[:, 0]
+    np.testing.assert_allclose(feet[:, 1], x**2, atol=1e-12)  # feet on the curve
+    v = tips - feet
+    tangent = np.column_stack([np.ones_like(x), 2 * x])  # (1, y'(x))
+    cosang = np.abs(np.sum(v * tangent, axis=1)) / (
+        np.linalg.norm(v, axis=1) * np.linalg.norm(tangent, axis=1)
+    )
+    assert np.max(cosang) < 1e-9  # perpendicular
+    np.testing.assert_allclose(np.linalg.norm(v, axis=1), 0.5 * parabola_kappa(x), rtol=1e-8)
+    assert np.all(v[:, 1] < 0)  # "outside": away from the centre of curvature (above)
+
+
+def test_comb_inside_and_update(ax):
+    arts = plot_curvature_comb(ax, PARABOLA, samples=20, scale=1.0, side="inside")
+    v = np.diff(arts.tooth_array(), axis=1)[:, 0]
+    assert np.all(v[:, 1] > 0)
+    arts.update(G1_CURVE)
+    assert len(arts.envelope.get_segments()) == 2
+    with pytest.raises(ValueError, match="side"):
+        plot_curvature_comb(ax, PARABOLA, side="left")
+
+
+def test_comb_envelope_not_bridged_at_a_g2_break(ax):
+    arts = plot_curvature_comb(ax, G1_CURVE, samples=200, scale=1.0)
+    env = arts.envelope.get_segments()
+    assert len(env) == 2
+    # tooth tips at the joint from both sides: foot + scale * (-K) with K = kappa N
+    N = (V[3] - V[2])[::-1] * [-1, 1] / np.linalg.norm(V[3] - V[2])
+    kl, kr = bezier_end_curvature(V, 1), bezier_end_curvature(W, 0)
+    np.testing.assert_allclose(env[0][-1], V[3] - kl * N, atol=1e-7)
+    np.testing.assert_allclose(env[1][0], V[3] - kr * N, atol=1e-9)
+
+
+# --------------------------------------------------------------- profile
+def test_profile_shows_the_curvature_jump_of_a_g1_joint(ax):
+    arts = plot_curvature_profile(ax, G1_CURVE, per_segment=60)
+    segs = arts.lines.get_segments()
+    assert len(segs) == 2  # one line per segment: the jump is not bridged
+    kl, kr = bezier_end_curvature(V, 1), bezier_end_curvature(W, 0)
+    assert abs(kr - kl) > 0.1  # the example really is not G2
+    np.testing.assert_allclose(segs[0][-1, 1], kl, rtol=1e-7)
+    np.testing.assert_allclose(segs[1][0, 1], kr, rtol=1e-9)
+    np.testing.assert_allclose(segs[0][0, 1], bezier_end_curvature(V, 0), rtol=1e-9)
+    # x is arc length: the joint sits at the length of the first segment (scipy quadrature)
+    d1 = 3 * np.diff(V, axis=0)
+    speed = lambda u: np.linalg.norm(  # noqa: E731
+        d1[0] * (1 - u) ** 2 + 2 * d1[1] * u * (1 - u) + d1[2] * u**2
+    )
+    L0 = quad(speed, 0, 1, epsabs=1e-13)[0]
+    np.testing.assert_allclose(segs[1][0, 0], L0, rtol=1e-10)
+    np.testing.assert_allclose(segs[0][-1, 0], L0, rtol=1e-8)
+    assert all(np.all(np.diff(s[:, 0]) > 0) for s in segs)
+    jx = [seg[0][0] for seg in arts.joint_lines.get_segments()]
+    np.testing.assert_allclose(jx, [L0], rtol=1e-10)
+    ex, _ey = arts.ends.get_data()
+    assert len(ex) == 4  # both ends of both segments
+
+
+def test_profile_of_a_g2_curve_is_continuous(ax):
+    # a C2 split of one cubic (de Casteljau at 1/2 by hand): no jump
+    P = np.array([[0, 0], [1, 2], [3, 2], [4, 0]], float)
+    L = [P[0], (P[0] + P[1]) / 2, (P[0] + 2 * P[1] + P[2]) / 4, (P[0] + 3 * P[1] + 3 * P[2] + P[3]) / 8]
+    R = [L[3], (P[1] + 2 * P[2] + P[3]) / 4, (P[2] + P[3]) / 2, P[3]]
+    segs = plot_curvature_profile(ax, PiecewiseBezier([L, R])).lines.get_segments()
+    np.testing.assert_allclose(segs[0][-1], segs[1][0], rtol=1e-7)
+
+
+def test_profile_against_parameter_and_unsigned(ax):
+    arts = plot_curvature_profile(ax, PARABOLA, x="parameter", signed=False, per_segment=11)
+    (s,) = arts.lines.get_segments()
+    u = np.linspace(0, 1, 11)
+    np.testing.assert_allclose(s[:, 0], u)
+    np.testing.assert_allclose(s[:, 1], parabola_kappa(2 * u - 1), rtol=1e-9)
+    with pytest.raises(ValueError, match="x must be"):
+        plot_curvature_profile(ax, PARABOLA, x="time")
+
+
+# ----------------------------------------------------------------- vectors
+def test_frame_vectors(ax):
+    t = np.array([0.25, 0.5, 0.9])
+    arts = plot_frame(ax, PARABOLA, t, normal=True, length=2.0, curvature_scale=3.0)
+    x = 2 * t - 1
+    T = np.column_stack([np.ones_like(x), 2 * x]) / np.sqrt(1 + 4 * x**2)[:, None]
+    np.testing.assert_allclose(np.column_stack([arts.tangent.U, arts.tangent.V]), 2 * T)
+    Nrm = np.column_stack([-T[:, 1], T[:, 0]])
+    np.testing.assert_allclose(np.column_stack([arts.normal.U, arts.normal.V]), 2 * Nrm)
+    K = parabola_kappa(x)[:, None] * Nrm
+    np.testing.assert_allclose(np.column_stack([arts.curvature.U, arts.curvature.V]), 3 * K)
+    np.testing.assert_allclose(arts.tangent.get_offsets(), np.column_stack([x, x**2]))
+    arts.update(PARABOLA, [0.5])
+    np.testing.assert_allclose(np.column_stack(arts.point.get_data()), [[0.0, 0.0]], atol=1e-15)
+
+
+def test_osculating_circle_of_the_parabola_vertex(ax):
+    arts = plot_osculating_circle(ax, PARABOLA, 0.5)  # x = 0: radius 1/2, centre (0, 1/2)
+    np.testing.assert_allclose(arts.circle.get_center(), [0.0, 0.5], atol=1e-14)
+    np.testing.assert_allclose(arts.circle.get_radius(), 0.5)
+    assert arts.circle.get_visible()
+
+
+def test_osculating_circle_hidden_on_a_line(ax):
+    line = PiecewiseBezier([[[0, 0], [1, 1], [2, 2]]])
+    arts = plot_osculating_circle(ax, line, 0.5)  # curvature 0: no circle, no exception
+    assert not arts.circle.get_visible()
+
+
+# ---------------------------------------------------------------- blending
+def test_blending_functions_of_a_bezier_curve_are_bernstein(ax):
+    d = 4
+    t, b = blending_functions(lambda P: PiecewiseBezier([P]), d + 1, per_segment=21)
+    u = t[0]
+    for k in range(d + 1):
+        np.testing.assert_allclose(b[k, 0], comb(d, k) * u**k * (1 - u) ** (d - k), atol=1e-14)
+    arts = plot_blending_functions(ax, lambda P: PiecewiseBezier([P]), d + 1, highlight=2)
+    assert len(arts.lines) == d + 1 and arts.support is not None
+
+
+def test_blending_functions_local_support_and_partition_of_unity(ax):
+    # C0 piecewise-linear interpolation: hat functions, support [k-1, k+1]
+    def polyline(P):
+        return PiecewiseBezier([P[i : i + 2] for i in range(len(P) - 1)])
+
+    _t, b = blending_functions(polyline, 5, per_segment=9)
+    np.testing.assert_allclose(b.sum(axis=0), 1.0, atol=1e-14)
+    assert np.all(b[2, 0] == 0) and np.all(b[2, 3] == 0)  # zero on segments 0 and 3
+    with pytest.raises(ValueError, match="highlight"):
+        plot_blending_functions(ax, polyline, 5, highlight=5)
+
+
+# ----------------------------------------------------------- constructions
+def test_g1_stitch_diagram(ax):
+    b1 = 0.7
+    dg = plot_g1_stitch(ax, V, W, b1)
+    x, y = dg.artists["line:ray"].get_data()
+    R = np.column_stack([x, y])
+    np.testing.assert_allclose(R, [V[2], V[3], W[1]])
+    # the drawn ray is straight and the lengths are in ratio 1 : beta1
+    a, b = R[1] - R[0], R[2] - R[1]
+    assert abs(a[0] * b[1] - a[1] * b[0]) < 1e-12
+    np.testing.assert_allclose(np.linalg.norm(b) / np.linalg.norm(a), b1)
+    assert dg.artists["label:V3"].get_text() == "$V_{3} = W_0$"
+    texts = [dg.artists[f"ratio:{i}"].get_text() for i in range(2)]
+    assert texts == ["1", "β₁ = 0.7"]
+
+
+def farin_boehm_by_hand(V, b1, b2):
+    """Seed 000 eq. (12) written out independently (d = 3)."""
+    d = len(V) - 1
+    g = (d - 1) * (1 + b1) / (b2 + b1 * (d - 1) * (1 + b1))
+    W0 = V[-1]
+    W1 = W0 + b1 * (V[-1] - V[-2])
+    T = V[-2] + b1**2 * g * (V[-2] - V[-3])
+    W2 = W1 + (W1 - T) / g
+    return g, T, np.array([W0, W1, W2, [9.0, 1.0]])
+
+
+def test_farin_boehm_diagram_and_update(ax):
+    g, T, Wfb = farin_boehm_by_hand(V, 1.3, 2.0)
+    dg = plot_farin_boehm(ax, V, Wfb, T, 1.3, g)
+    leg = np.column_stack(dg.artists["line:leg"].get_data())
+    fan = np.column_stack(dg.artists["line:fan"].get_data())
+    np.testing.assert_allclose(leg, [V[1], V[2], T])
+    np.testing.assert_allclose(fan, [T, Wfb[1], Wfb[2]])
+    assert dg.artists["label:T"].get_text() == "$T$"
+    # the diagram moves with new points (as in the widget)
+    _g2, T2, W2 = farin_boehm_by_hand(V, 0.5, 0.0)
+    dg.update({"T": T2, "W1": W2[1], "W2": W2[2]})
+    np.testing.assert_allclose(np.column_stack(dg.artists["line:fan"].get_data()), [T2, W2[1], W2[2]])
+    np.testing.assert_allclose(dg.artists["label:T"].xy, T2)
+
+
+def test_knot_joint_construction_links_are_parallel(ax):
+    # Finn's joint rule by hand: p3i = (t_{i+1}-t_i)/(t_{i+1}-t_{i-1}) p3i-1 + (t_i-t_{i-1})/(...) p3i+1
+    knots = np.array([0.0, 1.0, 3.0, 4.0])
+    p = [np.array(q, float) for q in
+         [[0, 0], [1, 2], [2, 2.5], None, [4, 1], [5, 0], None, [7, 1.5], [8, 3], [9, 2]]]
+    for i, (a, b) in ((1, (2, 4)), (2, (5, 7))):
+        t0, t1, t2 = knots[i - 1 : i + 2]
+        p[3 * i] = (t2 - t1) / (t2 - t0) * p[a] + (t1 - t0) / (t2 - t0) * p[b]
+    c = PiecewiseBezier.from_control_points(np.array(p), 3, knots)
+    dg = plot_knot_joint_construction(ax, c)
+    for i in (1, 2):
+        links = [np.diff(np.column_stack(dg.artists[f"line:link{i}_{m}"].get_data()), axis=0)[0]
+                 for m in range(3)]
+        np.testing.assert_allclose(links[0], links[1], atol=1e-12)
+        np.testing.assert_allclose(links[0], links[2], atol=1e-12)
+    assert dg.artists["label:tp2"].get_text() == "$t_{2}=3$"
+    with pytest.raises(ValueError, match="joints must be in"):
+        plot_knot_joint_construction(ax, c, joints=[3])
+
+
+def test_beta_spline_construction_reads_the_segments(ax):
+    Vp = np.array([[0, 0], [1, 2], [3, 2], [4, 0]], float)
+    b1 = 2.0
+    segs = [[(b1 * Vp[i - 1] + Vp[i]) / (1 + b1), Vp[i], (b1 * Vp[i] + Vp[i + 1]) / (1 + b1)]
+            for i in (1, 2)]  # seed 000 eq. (18)-(19)
+    dg = plot_beta_spline_construction(ax, PiecewiseBezier(segs), Vp)
+    J = np.column_stack(dg.artists["junctions"].get_data())
+    np.testing.assert_allclose(J[1], (b1 * Vp[1] + Vp[2]) / (1 + b1))
+    inner = np.column_stack(dg.artists["interior"].get_data())
+    np.testing.assert_allclose(inner, Vp[1:3])
+
+
+# ----------------------------------------------------------------- style
+def test_course_style_is_scoped():
+    before = dict(matplotlib.rcParams)
+    with course_style():
+        assert matplotlib.rcParams["font.size"] == 13
+        assert matplotlib.rcParams["axes.prop_cycle"].by_key()["color"][0] == OKABE_ITO["blue"]
+    assert matplotlib.rcParams["font.size"] == before["font.size"]
+    assert segment_color(0) != segment_color(1) and segment_color(0) == segment_color(2)
+
+
+def test_new_figure_agg_and_grid():
+    fig, axs = new_figure(2, 2, pyplot=False)
+    assert axs.shape == (2, 2) and type(fig.canvas).__name__ == "FigureCanvasAgg"
+    _fig3, ax3 = new_figure(pyplot=False, projection="3d")
+    assert ax3.name == "3d"
+
+
+def test_importing_plotting_has_no_global_side_effects():
+    code = (
+        "import matplotlib, sys\n"
+        # dict.items bypasses RcParams.__getitem__, whose 'backend' lookup imports pyplot
+        "before = dict(dict.items(matplotlib.rcParams))\n"
+        "import course_lib.plotting, course_lib.widgets\n"
+        "after = dict(dict.items(matplotlib.rcParams))\n"
+        "print(before == after, 'matplotlib.pyplot' in sys.modules)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.split() == ["True", "False"]
+
+
+def test_plot_functions_return_artists_on_their_axes(ax):
+    for arts in (plot_curve(ax, G1_CURVE), plot_curvature_comb(ax, G1_CURVE)):
+        for a in arts.artists:
+            assert a.axes is ax
+    fr = plot_frame(ax, G1_CURVE, 0.5)
+    assert isinstance(fr.point, Line2D) and fr.normal is None

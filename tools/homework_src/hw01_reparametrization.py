@@ -1,0 +1,197 @@
+# Source of exercises/hw01_reparametrization.ipynb and solutions/hw01_reparametrization.ipynb.
+# Edit here, then run `python tools/build_homework.py` (format: see that script's docstring).
+# ruff: noqa: B018
+
+# %% [markdown]
+# *Geometric continuity of parametric curves* · Homework 1 of 4 · after the lectures on
+# parametric curves, the unit tangent and reparametrization (seed 000 §1–4, seed 004 §19.2).
+#
+# # Homework 1 — Parametrizations, the unit tangent and reparametrization
+#
+# A curve is a set of points; a *parametrization* is one way of tracing it. In this homework you
+# compute the first "geometric" derivative (the unit tangent), apply the chain rule to a change of
+# variables, and sort the quantities that belong to the curve from those that belong to one
+# parametrization only.
+#
+# **How to work.** Replace each `...` by your answer (or write the body of the function), run the
+# cell, then run the **check cell** below it:
+#
+# - ✓ your answer has the properties it must have;
+# - ✗ what is wrong, in the terms of the course;
+# - … not answered yet.
+#
+# The checks are feedback, not the grade: the grade comes from other tests with other data, so
+# write code that works in general. Keep the names (`answer_q1`, `chain_rule_derivatives`, ...),
+# do not delete cells, and before you hand in run *Kernel → Restart Kernel and Run All Cells*.
+
+# %% [markdown]
+# ## Preparations
+
+# %%
+import numpy as np
+import sympy as sp
+from scipy.integrate import quad
+
+from course_lib.checks import check, check_all
+
+HOMEWORK = "hw01"
+
+# %% [markdown]
+# ## Question 1 — a unit tangent (compute)
+#
+# The plane curve $\mathbf c(t) = (t^2 + t,\ t^3 - 2t)$ is traced for increasing $t$.
+# Compute its unit tangent $\mathbf T(1) = \mathbf c'(1) / \lVert \mathbf c'(1) \rVert$
+# (seed 004 §19.2) as a numpy array of shape `(2,)`.
+
+# %%
+### BEGIN SOLUTION
+c1 = np.array([2 * 1 + 1, 3 * 1**2 - 2], dtype=float)  # c'(t) = (2t + 1, 3t² − 2)
+answer_q1 = c1 / np.linalg.norm(c1)
+### END SOLUTION
+### STUDENT answer_q1 = ...
+
+# %%
+check("hw01.q1", answer_q1)
+
+# %% [markdown]
+# ## Question 2 — the chain rule (write a function)
+#
+# Let $\tilde{\mathbf q}(s) = \mathbf q(f(s))$. Write `chain_rule_derivatives(q1, q2, f1, f2)`
+# that returns the array `[q̃'(s), q̃''(s)]` (shape `(2, dim)`) from
+#
+# - `q1`, `q2`: the vectors $\mathbf q'(f(s))$ and $\mathbf q''(f(s))$ (numpy arrays of shape `(dim,)`),
+# - `f1`, `f2`: the numbers $f'(s)$ and $f''(s)$.
+#
+# It must work in the plane and in space.
+
+# %%
+def chain_rule_derivatives(q1, q2, f1, f2):
+    """First and second derivative of q(f(s)), stacked as an array of shape (2, dim)."""
+    ### BEGIN SOLUTION
+    q1, q2 = np.asarray(q1, dtype=float), np.asarray(q2, dtype=float)
+    return np.array([q1 * f1, q2 * f1**2 + q1 * f2])
+    ### END SOLUTION
+    ### STUDENT raise NotImplementedError("write the body of chain_rule_derivatives")
+
+# %%
+check("hw01.q2", chain_rule_derivatives)
+
+# %% [markdown]
+# ## Question 3 — which is a change of variables? (multiple choice)
+#
+# Seed 000 §4 asks of an *orientation-preserving change of variables* $f$ from $[0, 1]$ onto
+# $[0, 1]$: it is regular and $C^n$, it maps the interval **onto** the interval, and $f' > 0$.
+# Which one qualifies?
+#
+# (a) $f(s) = s^2$  (b) $f(s) = 1 - s$  (c) $f(s) = 2s$  (d) $f(s) = (s + s^2)/2$
+#
+# Answer with a letter, e.g. `answer_q3 = "a"`.
+
+# %%
+### BEGIN SOLUTION
+answer_q3 = "d"
+### END SOLUTION
+### STUDENT answer_q3 = ...
+
+# %%
+check("hw01.q3", answer_q3)
+
+# %% [markdown] solution
+# (a) has $f'(0) = 0$: not regular at $s = 0$. (b) has $f' = -1 < 0$: it reverses the orientation.
+# (c) maps $[0, 1]$ onto $[0, 2]$. (d) has $f(0) = 0$, $f(1) = 1$ and $f'(s) = (1 + 2s)/2 > 0$.
+
+# %% [markdown]
+# ## Question 4 — a signed curvature (derive with sympy)
+#
+# For the parabola $\mathbf q(u) = (u, u^2)$, use sympy to compute the signed curvature
+# $\kappa = \det(\mathbf q', \mathbf q'') / \lVert \mathbf q' \rVert^3$ (seed 004 §19.2: positive
+# when the curve turns towards $\mathbf N$, i.e. to the left) at $u = 1$. An exact sympy number or
+# a float are both fine.
+
+# %%
+### BEGIN SOLUTION
+u = sp.Symbol("u", real=True)
+q = sp.Matrix([u, u**2])
+dq, ddq = q.diff(u), q.diff(u, 2)
+kappa = (dq[0] * ddq[1] - dq[1] * ddq[0]) / dq.dot(dq) ** sp.Rational(3, 2)
+answer_q4 = sp.simplify(kappa.subs(u, 1))
+### END SOLUTION
+### STUDENT answer_q4 = ...
+answer_q4
+
+# %%
+check("hw01.q4", answer_q4)
+
+# %% [markdown]
+# ## Question 5 — reparametrize the parabola (compute)
+#
+# Reparametrize the parabola of question 4 by the change of variables $f(s) = (s + s^2)/2$ of
+# question 3: $\tilde{\mathbf q}(s) = \mathbf q(f(s))$. Compute $\tilde{\mathbf q}''(1)$ (shape
+# `(2,)`), for instance with your `chain_rule_derivatives`.
+
+# %%
+### BEGIN SOLUTION
+s = 1.0
+f, f1, f2 = (s + s**2) / 2, (1 + 2 * s) / 2, 1.0
+answer_q5 = chain_rule_derivatives(np.array([1.0, 2 * f]), np.array([0.0, 2.0]), f1, f2)[1]
+# the same by differentiating q(f(s)) directly with sympy:
+s_ = sp.Symbol("s")
+direct = sp.Matrix([(s_ + s_**2) / 2, ((s_ + s_**2) / 2) ** 2]).diff(s_, 2).subs(s_, 1)
+assert np.allclose(answer_q5, np.array(direct, dtype=float).ravel())
+### END SOLUTION
+### STUDENT answer_q5 = ...
+
+# %%
+check("hw01.q5", answer_q5)
+
+# %% [markdown]
+# ## Question 6 — what belongs to the curve? (multiple choice, several answers)
+#
+# Which of these quantities are *intrinsic* — the same for every equivalent parametrization at the
+# same point of the curve (seed 000 §4)?
+#
+# (a) the first derivative vector  (b) the unit tangent vector  (c) the speed
+# $\lVert \mathbf q' \rVert$  (d) the curvature vector  (e) the second derivative vector
+#
+# Answer with all right letters, e.g. `answer_q6 = "a, c"`.
+
+# %%
+### BEGIN SOLUTION
+answer_q6 = "b, d"
+### END SOLUTION
+### STUDENT answer_q6 = ...
+
+# %%
+check("hw01.q6", answer_q6)
+
+# %% [markdown] solution
+# By the chain rule $\tilde{\mathbf q}' = \mathbf q' f'$ changes with $f'$, and so does the speed;
+# $\tilde{\mathbf q}'' = \mathbf q'' f'^2 + \mathbf q' f''$ changes too. The unit tangent and the
+# curvature vector are derivatives with respect to arc length, which does not depend on $f$.
+
+# %% [markdown]
+# ## Question 7 — an arc length (compute)
+#
+# Compute the length of the parabola $\mathbf q(u) = (u, u^2)$, $0 \le u \le 1$: the integral of
+# the speed $\lVert \mathbf q'(u) \rVert$ (seed 004 §19.2). A numerical integral is fine.
+
+# %%
+### BEGIN SOLUTION
+answer_q7, _error = quad(lambda u: np.hypot(1.0, 2.0 * u), 0.0, 1.0)
+### END SOLUTION
+### STUDENT answer_q7 = ...
+
+# %%
+check("hw01.q7", answer_q7)
+
+# %% [markdown]
+# ## Check everything
+#
+# Run this last cell before you hand in: it checks every answer at once.
+
+# %%
+report = check_all(globals(), HOMEWORK)
+### BEGIN SOLUTION
+assert report.all_passed, report
+### END SOLUTION
+report

@@ -1,0 +1,222 @@
+# Source of exercises/hw02_beta_constraints.ipynb and solutions/hw02_beta_constraints.ipynb.
+# Edit here, then run `python tools/build_homework.py` (format: see that script's docstring).
+# ruff: noqa: B018
+
+# %% [markdown]
+# *Geometric continuity of parametric curves* · Homework 2 of 4 · after the lecture on the
+# Beta-constraints (seed 000 §5–7, seed 001 eq. 2.7).
+#
+# # Homework 2 — The Beta-constraints
+#
+# Two regular parametrizations $\mathbf q(u)$, $u \in [0, 1]$, and $\mathbf r(t)$, $t \in [0, 1]$,
+# meeting at $\mathbf r(0) = \mathbf q(1)$ are $G^n$ exactly when there are shape parameters
+# $\beta_1 > 0, \beta_2, \dots, \beta_n$ satisfying the Beta-constraints (seed 000 eq. 7):
+#
+# $$\mathbf r'(0) = \beta_1 \mathbf q'(1), \qquad
+#   \mathbf r''(0) = \beta_1^2 \mathbf q''(1) + \beta_2 \mathbf q'(1), \qquad \dots$$
+#
+# You will read shape parameters off derivative vectors, test for $G^1$, derive a higher
+# constraint with sympy, and read continuity off a picture.
+#
+# **How to work.** Replace each `...` by your answer (or write the body of the function), run the
+# cell, then run the **check cell** below it: ✓ right, ✗ what is wrong, … not answered yet.
+# The checks are feedback; the grade comes from other tests with other data. Keep the names, do
+# not delete cells, and before you hand in run *Kernel → Restart Kernel and Run All Cells*.
+
+# %% [markdown]
+# ## Preparations
+
+# %%
+import matplotlib.pyplot as plt
+import numpy as np
+import sympy as sp
+
+from course_lib import PiecewiseBezier
+from course_lib.checks import check, check_all
+
+HOMEWORK = "hw02"
+beta1, beta2, beta3, beta4 = sp.symbols("beta1:5")
+
+# %% [markdown]
+# ## Question 1 — β1 from two tangents (compute)
+#
+# At a joint, $\mathbf q'(1) = (2, -1)$ and $\mathbf r'(0) = (5, -2.5)$. Find $\beta_1$.
+
+# %%
+q1 = np.array([2.0, -1.0])
+r1 = np.array([5.0, -2.5])
+### BEGIN SOLUTION
+answer_q1 = np.linalg.norm(r1) / np.linalg.norm(q1)
+assert np.allclose(r1, answer_q1 * q1)  # (7.1) really holds: the joint is G1
+### END SOLUTION
+### STUDENT answer_q1 = ...
+
+# %%
+check("hw02.q1", answer_q1)
+
+# %% [markdown]
+# ## Question 2 — β1 and β2 from two derivatives (compute)
+#
+# At another joint $\mathbf q'(1) = (1, 2)$, $\mathbf q''(1) = (0, 2)$, $\mathbf r'(0) = (3, 6)$,
+# $\mathbf r''(0) = (-4, 10)$. Find $\beta_1$ and $\beta_2$ such that (7.1) and (7.2) hold; answer
+# `np.array([beta1_value, beta2_value])`.
+
+# %%
+q1, q2 = np.array([1.0, 2.0]), np.array([0.0, 2.0])
+r1, r2 = np.array([3.0, 6.0]), np.array([-4.0, 10.0])
+### BEGIN SOLUTION
+b1 = np.dot(r1, q1) / np.dot(q1, q1)
+b2 = np.dot(r2 - b1**2 * q2, q1) / np.dot(q1, q1)  # (7.2): r'' - β1² q'' must be β2 q'
+assert np.allclose(r2, b1**2 * q2 + b2 * q1)
+answer_q2 = np.array([b1, b2])
+### END SOLUTION
+### STUDENT answer_q2 = ...
+
+# %%
+check("hw02.q2", answer_q2)
+
+# %% [markdown]
+# ## Question 3 — a G1 test (write a function)
+#
+# Write `is_g1(q1, r1, tol=1e-9)` that returns `True` when the end tangent $\mathbf q'(1)$ and the
+# start tangent $\mathbf r'(0)$ (numpy arrays in the plane or in space) satisfy (7.1) for some
+# $\beta_1 > 0$, and `False` otherwise. Compare *directions* (the tolerance is for unit vectors),
+# so that very long and very short vectors are handled alike. A zero vector is not regular:
+# return `False`.
+
+# %%
+def is_g1(q1, r1, tol=1e-9):
+    """True if r1 = beta1 * q1 for some beta1 > 0."""
+    ### BEGIN SOLUTION
+    q1, r1 = np.asarray(q1, dtype=float), np.asarray(r1, dtype=float)
+    nq, nr = np.linalg.norm(q1), np.linalg.norm(r1)
+    if nq == 0 or nr == 0:
+        return False
+    return bool(np.linalg.norm(q1 / nq - r1 / nr) <= tol)
+    ### END SOLUTION
+    ### STUDENT raise NotImplementedError("write the body of is_g1")
+
+# %%
+check("hw02.q3", is_g1)
+
+# %% [markdown]
+# ## Question 4 — the fourth Beta-constraint (derive with sympy)
+#
+# Write $\bar{\mathbf q}(s) = \mathbf q(u(s))$ with $u(1) = 1$ and $\beta_j = u^{(j)}(1)$. The
+# fourth derivative $\bar{\mathbf q}''''(1)$ is a combination of $\mathbf q'(1), \dots,
+# \mathbf q''''(1)$. Derive, **with sympy**, the coefficient of $\mathbf q''(1)$, as an expression
+# in the symbols `beta1, ..., beta4` of the Preparations cell.
+#
+# *Hint:* stand-ins make it concrete: $\mathbf q(x) = \sum_k c_k (x-1)^k / k!$ has
+# $\mathbf q^{(k)}(1) = c_k$, and $u(s) = 1 + \sum_j \beta_j (s-1)^j / j!$ has $u^{(j)}(1) = \beta_j$.
+# Compare your result with seed 001 eq. (2.7): trust the derivation, not the print.
+
+# %%
+### BEGIN SOLUTION
+s = sp.Symbol("s")
+c = sp.symbols("c1:5")  # c_k stands for q^(k)(1)
+betas = (beta1, beta2, beta3, beta4)
+u_of_s = 1 + sum(b * (s - 1) ** j / sp.factorial(j) for j, b in enumerate(betas, start=1))
+q_of_u = sum(ck * (u_of_s - 1) ** k / sp.factorial(k) for k, ck in enumerate(c, start=1))
+fourth = sp.expand(sp.diff(q_of_u, s, 4).subs(s, 1))
+answer_q4 = fourth.coeff(c[1])
+### END SOLUTION
+### STUDENT answer_q4 = ...
+answer_q4
+
+# %%
+check("hw02.q4", answer_q4)
+
+# %% [markdown]
+# ## Question 5 — stitching by the second constraint (compute)
+#
+# Given $\mathbf q'(1) = (2, 0)$, $\mathbf q''(1) = (1, -3)$, $\beta_1 = 0.5$, $\beta_2 = 2$: which
+# second derivative $\mathbf r''(0)$ must the next segment have for $G^2$ continuity?
+
+# %%
+q1, q2 = np.array([2.0, 0.0]), np.array([1.0, -3.0])
+b1, b2 = 0.5, 2.0
+### BEGIN SOLUTION
+answer_q5 = b1**2 * q2 + b2 * q1
+### END SOLUTION
+### STUDENT answer_q5 = ...
+
+# %%
+check("hw02.q5", answer_q5)
+
+# %% [markdown]
+# ## Question 6 — the special values (multiple choice)
+#
+# At a joint the Beta-constraints hold with $\beta_1 = 1$ and $\beta_2 = 0$. Then:
+#
+# (a) the two parametrizations meet with $C^2$ continuity there
+# (b) they meet with $G^2$ continuity but never $C^1$
+# (c) the curvature jumps at the joint
+# (d) nothing can be said about parametric continuity
+
+# %%
+### BEGIN SOLUTION
+answer_q6 = "a"
+### END SOLUTION
+### STUDENT answer_q6 = ...
+
+# %%
+check("hw02.q6", answer_q6)
+
+# %% [markdown]
+# ## Question 7 — read a picture
+#
+# The curve below has four cubic segments and three joints A, B, C. On the right, its signed
+# curvature along the curve (one colour per segment). **Which joint is $G^1$ but not $G^2$?**
+# Answer with one letter.
+
+# %%
+segments_q7 = [
+    [[0, 0], [1, 1], [2, 1.5], [3, 1.5]],
+    [[3, 1.5], [4, 1.5], [5, 0.75], [6, 0.25]],
+    [[6, 0.25], [7, -0.25], [8, -0.5], [9, 0.5]],
+    [[9, 0.5], [10, 0.5], [11, 1.5], [12, 1.0]],
+]
+curve_q7 = PiecewiseBezier(segments_q7)
+fig, (ax_curve, ax_kappa) = plt.subplots(1, 2, figsize=(10, 3.2))
+uu = np.linspace(0.0, 1.0, 200)
+for i in range(curve_q7.n_segments):
+    p, d1, d2 = (curve_q7.evaluate_segment(i, uu, n) for n in (0, 1, 2))
+    kappa = (d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0]) / np.linalg.norm(d1, axis=1) ** 3
+    ax_curve.plot(p[:, 0], p[:, 1], lw=2)
+    ax_kappa.plot(i + uu, kappa, lw=2)
+for name, (x, y), t in zip("ABC", curve_q7.joint_points, curve_q7.joint_parameters, strict=True):
+    ax_curve.annotate(name, (x, y), xytext=(0, 8), textcoords="offset points", ha="center")
+    ax_kappa.axvline(t, color="0.6", ls=":")
+    ax_kappa.annotate(name, (t, 1.02), xycoords=("data", "axes fraction"), ha="center")
+ax_curve.set_aspect("equal")
+ax_curve.set_title("the curve")
+ax_kappa.set_title("signed curvature κ")
+ax_kappa.set_xlabel("parameter t")
+plt.show()
+
+# %%
+### BEGIN SOLUTION
+answer_q7 = "A"
+### END SOLUTION
+### STUDENT answer_q7 = ...
+
+# %%
+check("hw02.q7", answer_q7)
+
+# %% [markdown] solution
+# At A the tangent turns smoothly but κ jumps: $G^1$, not $G^2$. At B the two segments are the two
+# halves of one cubic (de Casteljau subdivision), so everything is continuous. At C the curve has
+# a corner: not even $G^1$ (the curvature plot cannot show that — look at the curve).
+
+# %% [markdown]
+# ## Check everything
+#
+# Run this last cell before you hand in: it checks every answer at once.
+
+# %%
+report = check_all(globals(), HOMEWORK)
+### BEGIN SOLUTION
+assert report.all_passed, report
+### END SOLUTION
+report
