@@ -5,7 +5,8 @@ One ``pytest --nbval-lax`` run over every ``.ipynb`` under ``notebooks/``,
 ``make test``), with a JUnit XML report.  A notebook's time is the sum of its
 cells' times including setup and teardown (the kernel start and stop); the
 suite's time is the wall time of the whole pytest run.  Run once: a notebook is
-too slow to repeat within the benchmark's two-minute budget.
+too slow to repeat within the benchmark's two-minute budget.  Reference, for
+scale: a one-cell notebook executed with nbclient (the kernel start and stop).
 """
 
 from __future__ import annotations
@@ -30,6 +31,19 @@ def find_notebooks() -> list[Path]:
             p for p in (REPO / folder).rglob("*.ipynb") if ".ipynb_checkpoints" not in p.parts
         )
     return out
+
+
+def empty_notebook_time() -> float:
+    """Wall time of executing a one-cell notebook with nbclient: the kernel start and
+    stop that every notebook pays, for scale."""
+    import nbformat
+    from nbclient import NotebookClient
+
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [nbformat.v4.new_code_cell("1 + 1")]
+    t0 = time.perf_counter()
+    NotebookClient(nb, kernel_name="python3", timeout=120).execute()
+    return time.perf_counter() - t0
 
 
 def run(sizes: Sizes, skip: bool = False) -> list[Result]:
@@ -61,10 +75,19 @@ def run(sizes: Sizes, skip: bool = False) -> list[Result]:
                 per_nb[nb] += float(case.get("time", 0.0))
                 if case.find("failure") is not None or case.find("error") is not None:
                     failed[nb] += 1
+    try:
+        kernel = empty_notebook_time()
+    except Exception:  # no kernel: the nbval run above has said so already
+        kernel = None
     results = []
     for nb, seconds in sorted(per_nb.items()):
         note = f"{failed[nb]} cell(s) FAILED" if failed[nb] else "all cells pass"
-        results.append(Result("6", f"nbval `{nb}`", seconds, note=note, met=not failed[nb]))
+        results.append(
+            Result(
+                "6", f"nbval `{nb}`", seconds, "empty notebook" if kernel else "", kernel,
+                note=note, met=not failed[nb],
+            )
+        )
     summary = proc.stdout.strip().splitlines()[-1] if proc.stdout.strip() else proc.stderr[-200:]
     results.append(
         Result(

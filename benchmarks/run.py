@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 import time
 from datetime import datetime, timezone
@@ -112,6 +113,10 @@ def main(argv: list[str] | None = None) -> int:
     t0 = time.perf_counter()
     results = run_all(sizes, skip_notebooks=args.skip_notebooks or args.quick, only=args.only)
     elapsed = time.perf_counter() - t0
+    try:
+        info["load average (1 min) at end"] = f"{os.getloadavg()[0]:.2f}"
+    except OSError:
+        pass
     text = report(results, info, sizes, elapsed)
     print(text)
     if out is None:

@@ -54,8 +54,9 @@ __all__ = [
 
 
 # ------------------------------------------------------------------ parameters
-def _per_site(value: object, name: str, n_sites: int, n_joints: int, site: str,
-              default: float, positive: bool) -> np.ndarray:
+def _per_site(
+    value: object, name: str, n_sites: int, n_joints: int, site: str, default: float, positive: bool
+) -> np.ndarray:
     """Shape parameter as a scalar, one per site (leg or vertex), or one per interior joint."""
     arr = None
     if not isinstance(value, (str, bytes)) and value is not None:
@@ -72,7 +73,11 @@ def _per_site(value: object, name: str, n_sites: int, n_joints: int, site: str,
             f"{name} must be a scalar, one value per interior joint ({n_joints}) or one per "
             f"{site} ({n_sites}); got {arr.size}"
         )
-    out = check_shape_parameters(value, name, n_sites, positive=positive)
+    out = check_shape_parameters(value, name, n_sites, positive=False)
+    if positive and np.any(out <= 0):
+        j = int(np.argmax(out <= 0))
+        where = f"leg {j}" if site.startswith("leg") else f"vertex V_{j}"
+        raise ValueError(f"{name} must be > 0 at every {site}; at {where} it is {out[j]}")
     return out
 
 
@@ -221,9 +226,7 @@ def cubic_beta_spline(
     b1 = _per_site(beta1, "beta1", m + 1, m - 3, "control vertex", 1.0, True)
     b2 = _per_site(beta2, "beta2", m + 1, m - 3, "control vertex", 0.0, False)
     W1, W2, J, g = _cubic_points(P, b1, b2)
-    _check_joint_tangents(
-        W2[:-1], W1[1:], P, lambda k: f"vertex V_{k + 1}", "W_(j-1),2 = W_j,1"
-    )
+    _check_joint_tangents(W2[:-1], W1[1:], P, lambda k: f"vertex V_{k + 1}", "W_(j-1),2 = W_j,1")
     segs = _cubic_polygons_from(W1, W2, J)
     info = {
         "beta1": b1[2:-2].copy(),

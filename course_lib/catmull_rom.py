@@ -39,29 +39,48 @@ from .curve import PiecewiseBezier
 __all__ = ["catmull_rom", "catmull_rom_blending"]
 
 
-def catmull_rom_blending(u: float | np.ndarray, beta1: float = 1.0) -> np.ndarray:
-    """The weights ``φ_{-1}, φ_0, φ_1, φ_2`` of seed 000 eq. (14.1)-(14.4) (global β1).
+def catmull_rom_blending(
+    u: float | np.ndarray, beta1: float = 1.0, beta1_end: float | None = None
+) -> np.ndarray:
+    """The weights ``φ_{-1}, φ_0, φ_1, φ_2`` of ``V_{i-1} .. V_{i+2}`` in segment ``i``.
+
+    With one global β1 these are seed 000 eq. (14.1)-(14.4).  With local shape
+    parameters, ``beta1`` is the value at the segment's start ``V_i`` (``a``) and
+    ``beta1_end`` at its end ``V_{i+1}`` (``b``); in cubic Hermite form
+    (``h00 = 2u³-3u²+1``, ``h10 = u³-2u²+u``, ``h01 = -2u³+3u²``, ``h11 = u³-u²``)::
+
+        φ_{-1} = -a²/(1+a) h10,          φ_0 = h00 + (a-1) h10 - b/(1+b) h11,
+        φ_1 = h01 + h10/(1+a) + (b-1)/b h11,   φ_2 = h11 / (b(1+b)),
+
+    which for ``a = b`` is eq. (14) (test: ``test_catmull_rom.py::test_eq_14_symbolic``).
 
     Parameters
     ----------
     u : float or array_like of shape (m,)
     beta1 : float
-        ``β1 > 0``.
+        ``β1 > 0`` (global, or at the segment's start).
+    beta1_end : float, optional
+        ``β1 > 0`` at the segment's end (default: ``beta1``).
 
     Returns
     -------
     ndarray of shape (4,) or (m, 4)
     """
-    b = float(check_shape_parameters(beta1, "beta1", 1, positive=True)[0])
+    a = float(check_shape_parameters(beta1, "beta1", 1, positive=True)[0])
+    b = (
+        a
+        if beta1_end is None
+        else float(check_shape_parameters(beta1_end, "beta1_end", 1, positive=True)[0])
+    )
     uu, scalar = as_parameter_array(u, "u")
     u2, u3 = uu**2, uu**3
+    h00, h10 = 2 * u3 - 3 * u2 + 1, u3 - 2 * u2 + uu
+    h01, h11 = -2 * u3 + 3 * u2, u3 - u2
     out = np.empty((uu.size, 4))
-    out[:, 0] = -(b**2) * (u3 - 2 * u2 + uu) / (b + 1)
-    out[:, 1] = ((b * b + b + 1) * u3 - (2 * b * b + 2 * b + 1) * u2 + (b * b - 1) * uu + b + 1) / (
-        b + 1
-    )
-    out[:, 2] = -((b * b + b + 1) * u3 - (2 * b * b + b + 1) * u2 - b * uu) / (b * (b + 1))
-    out[:, 3] = (u3 - u2) / (b * (b + 1))
+    out[:, 0] = -(a**2) / (1 + a) * h10
+    out[:, 1] = h00 + (a - 1) * h10 - b / (1 + b) * h11
+    out[:, 2] = h01 + h10 / (1 + a) + (b - 1) / b * h11
+    out[:, 3] = h11 / (b * (1 + b))
     return out[0] if scalar else out
 
 
@@ -76,7 +95,11 @@ def _vertex_betas(beta1: object, n_vertices: int, n_joints: int) -> np.ndarray:
             f"beta1 must be a scalar, one value per interior joint ({n_joints}) or one per "
             f"interpolated vertex V_1..V_(m-1) ({n_vertices}); got {arr.size}"
         )
-    return check_shape_parameters(beta1, "beta1", n_vertices, positive=True)
+    b = check_shape_parameters(beta1, "beta1", n_vertices, positive=False)
+    if np.any(b <= 0):
+        j = int(np.argmax(b <= 0))
+        raise ValueError(f"beta1 must be > 0 at every vertex; at V_{j + 1} it is {b[j]}")
+    return b
 
 
 def catmull_rom(V: np.ndarray, beta1: float | np.ndarray = 1.0) -> PiecewiseBezier:

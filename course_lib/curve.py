@@ -23,7 +23,8 @@ from __future__ import annotations
 
 from bisect import bisect_right
 from collections.abc import Mapping, Sequence
-from math import comb
+from functools import lru_cache
+from math import comb, factorial
 from types import MappingProxyType
 
 import numpy as np
@@ -62,6 +63,29 @@ def _horner_chunk(t: np.ndarray, table: np.ndarray, halves: tuple, out: np.ndarr
     for k in range(top - 1, -1, -1):
         out *= w
         out += table[k].take(j, axis=0)
+
+
+@lru_cache(maxsize=64)
+def _taylor_matrix(d: int, n: int) -> np.ndarray:
+    """Integer matrix taking a degree-``d`` control polygon ``P`` to the two-sided Taylor
+    coefficients of its n-th derivative (see :meth:`PiecewiseBezier._taylor`).
+
+    With ``e = d - n`` and ``Δ^m P_i = sum_j (-1)^(m-j) C(m, j) P_(i+j)``, row ``k`` is
+    ``C(e, k) d!/e! Δ^(n+k) P_0`` (expansion at ``u = 0``) and row ``e + 1 + k`` is
+    ``C(e, k) d!/e! Δ^(n+k) P_(e-k)`` (expansion at ``u = 1``), ``k = 0..e``.
+    Built in exact integer arithmetic.
+    """
+    e = d - n
+    M = np.zeros((2 * (e + 1), d + 1))
+    for k in range(e + 1):
+        m = n + k
+        c = comb(e, k) * (factorial(d) // factorial(e))
+        for j in range(m + 1):
+            w = c * comb(m, j) * (-1) ** (m - j)
+            M[k, j] = w
+            M[e + 1 + k, e - k + j] = w
+    M.setflags(write=False)
+    return M
 
 
 def _readonly(a: np.ndarray) -> np.ndarray:
@@ -417,25 +441,30 @@ class PiecewiseBezier:
         """
         key = ("taylor", n)
         if key not in self._cache:
-            hod = [_derivative_points(s, n) for s in self._segments]
-            top = max(q.shape[0] - 1 for q in hod)
-            if top > _TAYLOR_MAX_DEGREE:
-                self._cache[key] = None
-            else:
-                h = np.diff(self._knots)
-                table = np.zeros((top + 1, 2 * len(hod), self.dim))
-                for i, Q in enumerate(hod):
-                    e = Q.shape[0] - 1
-                    scale = h[i] ** -float(n) if n else 1.0
-                    diff = Q
-                    for k in range(e + 1):
-                        c = comb(e, k) * scale
-                        table[k, 2 * i] = c * diff[0]
-                        table[k, 2 * i + 1] = c * diff[-1]
-                        diff = np.diff(diff, axis=0)
-                table.setflags(write=False)
-                self._cache[key] = table
+            top = max(0, max(self.degrees) - n)
+            self._cache[key] = None if top > _TAYLOR_MAX_DEGREE else self._taylor_table(n, top)
         return self._cache[key]
+
+    def _taylor_table(self, n: int, top: int) -> np.ndarray:
+        """Build the table of :meth:`_taylor`: one matrix product per degree present
+        (curves are rebuilt on every slider move, so this must be cheap too)."""
+        h = np.diff(self._knots)
+        scale = h ** -float(n) if n else np.ones_like(h)
+        table = np.zeros((top + 1, 2 * self.n_segments, self.dim))
+        groups: dict[int, list[int]] = {}
+        for i, d in enumerate(self.degrees):
+            groups.setdefault(d, []).append(i)
+        for d, members in groups.items():
+            e = d - n
+            if e < 0:  # derivative order above the degree: the zero polynomial
+                continue
+            idx = np.array(members)
+            Q = np.stack([self._segments[i] for i in members])  # (G, d + 1, dim)
+            C = np.matmul(_taylor_matrix(d, n), Q) * scale[idx][:, None, None]
+            table[: e + 1, 2 * idx] = C[:, : e + 1].transpose(1, 0, 2)
+            table[: e + 1, 2 * idx + 1] = C[:, e + 1 :].transpose(1, 0, 2)
+        table.setflags(write=False)
+        return table
 
     def _horner_one(self, x: float, n: int) -> np.ndarray:
         """One parameter: the same arithmetic as :func:`_horner_chunk` on Python floats

@@ -155,12 +155,19 @@ def g2_stitch(
     Returns
     -------
     PiecewiseBezier
-        ``info``: ``beta1``, ``beta2`` (one value each), ``W012``.
+        ``info``: ``beta1``, ``beta2`` (one value each), ``W012``, and Farin-Boehm's
+        ``T`` and ``gamma`` when γ is defined.
     """
     P = _polygon(V)
     W = g2_stitch_points(P, beta1, beta2)
     R = _rest(W_rest, P.shape[0] - 3, P.shape[1], "G2 fixed W_0, W_1, W_2")
     info = {"beta1": np.array([float(beta1)]), "beta2": np.array([float(beta2)]), "W012": W}
+    d = P.shape[0] - 1
+    den = float(beta2) + float(beta1) * (d - 1) * (1 + float(beta1))
+    if den != 0.0:  # Farin-Boehm's T and gamma (eq. (12.1), (12.4)) when defined
+        g = (d - 1) * (1 + float(beta1)) / den
+        info["gamma"] = g
+        info["T"] = P[-2] + float(beta1) ** 2 * g * (P[-2] - P[-3])
     return PiecewiseBezier._fast([P, np.vstack([W, R])], info=info)
 
 
@@ -222,7 +229,9 @@ def farin_boehm(V_last3: np.ndarray, beta1: float, beta2: float, d: int) -> Fari
     """
     P = as_points(V_last3, "V_last3", min_points=3)
     if P.shape[0] != 3:
-        raise ValueError(f"V_last3 must hold exactly 3 points V_(d-2), V_(d-1), V_d; got {P.shape[0]}")
+        raise ValueError(
+            f"V_last3 must hold exactly 3 points V_(d-2), V_(d-1), V_d; got {P.shape[0]}"
+        )
     _check_regular_end(P, "V_last3")
     b1 = check_positive(beta1, "beta1")
     g = farin_boehm_gamma(b1, beta2, d)

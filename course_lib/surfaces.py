@@ -23,7 +23,7 @@ partial derivatives ``u^{(h,l)}, v^{(h,l)}`` (``1 <= h + l <= n``) that appear i
 partials of ``G(u(s, t), v(s, t))`` of orders ``1..n``: seed 001 §3 states there are
 ``n(n + 3)`` shape functions for G^n.
 
-Lesson: ``notebooks/06_surfaces.ipynb``.
+Lesson: ``notebooks/05_higher_order_and_surfaces.ipynb``.
 """
 
 from __future__ import annotations
@@ -104,8 +104,13 @@ class BezierPatch:
         return _diff_net(_diff_net(self._net, nu, 0), nv, 1)
 
     def evaluate(
-        self, u: float | np.ndarray, v: float | np.ndarray, nu: int = 0, nv: int = 0,
-        *, grid: bool = True,
+        self,
+        u: float | np.ndarray,
+        v: float | np.ndarray,
+        nu: int = 0,
+        nv: int = 0,
+        *,
+        grid: bool = True,
     ) -> np.ndarray:
         """Points or partial derivatives ``F^{(nu, nv)}(u, v)``.
 
@@ -247,7 +252,9 @@ def g1_neighbour_patch(
     if scalar:
         bb = np.array([bb[0], bb[0]])
     if bb.size != 2:
-        raise ValueError(f"beta must be a scalar or the two values (beta(0), beta(1)); got {bb.size}")
+        raise ValueError(
+            f"beta must be a scalar or the two values (beta(0), beta(1)); got {bb.size}"
+        )
     b0, b1 = (check_finite_scalar(x, "beta") for x in bb)
     P = F.control_net
     m, n = F.degree
@@ -282,18 +289,33 @@ def count_shape_functions(n: int) -> int:
     import sympy as sp
 
     n = check_integer(n, "n", minimum=1)
-    s, t = sp.symbols("s t")
-    u = sp.Function("u")(s, t)
-    v = sp.Function("v")(s, t)
-    G = sp.Function("G")(u, v)
+    # Every quantity is a symbol: G^{(a,b)} evaluated at (u, v), and the partials
+    # u^{(h,l)}, v^{(h,l)} of the change of variables.  Differentiation in s (or t) is
+    # the derivation with d/ds u^{(h,l)} = u^{(h+1,l)} and the bivariate chain rule
+    #   d/ds G^{(a,b)}(u, v) = G^{(a+1,b)} u^{(1,0)} + G^{(a,b+1)} v^{(1,0)}.
+    idx = [(a, b) for a in range(n + 2) for b in range(n + 2 - a)]
+    syms = {(k, a, b): sp.Symbol(f"{k}_{a}_{b}") for k in "Guv" for a, b in idx}
+    key = {sym: k for k, sym in syms.items()}
+
+    def deriv(expr, ds: int, dt: int):
+        out = sp.Integer(0)
+        for sym in expr.free_symbols:
+            k, a, b = key[sym]
+            if k == "G":
+                d = (
+                    syms["G", a + 1, b] * syms["u", ds, dt]
+                    + syms["G", a, b + 1] * syms["v", ds, dt]
+                )
+            else:
+                d = syms[k, a + ds, b + dt]
+            out += sp.diff(expr, sym) * d
+        return sp.expand(out)
+
     found: set = set()
-    # D[(i, j)] = d^{i+j} G / ds^i dt^j, each obtained from a lower one by one more diff.
-    D = {(0, 0): G}
+    D = {(0, 0): syms["G", 0, 0]}
     for order in range(1, n + 1):
         for i in range(order + 1):
             j = order - i
-            D[(i, j)] = sp.diff(D[(i - 1, j)], s) if i else sp.diff(D[(i, j - 1)], t)
-            for dd in D[(i, j)].atoms(sp.Derivative):
-                if dd.expr in (u, v):
-                    found.add(dd)
+            D[(i, j)] = deriv(D[(i - 1, j)], 1, 0) if i else deriv(D[(i, j - 1)], 0, 1)
+            found |= {key[x] for x in D[(i, j)].free_symbols if key[x][0] in "uv"}
     return len(found)

@@ -55,6 +55,7 @@ import shutil
 import sys
 import tempfile
 import time
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -172,11 +173,15 @@ class Result:
         return round(sum(self.points.values()), 2)
 
 
-def _kernel_manager():
-    """A kernel manager for the Python environment running this script."""
+def _client_class():
+    """A NotebookClient whose kernels run in the Python environment running this script.
+
+    The client creates (and therefore owns, kills and cleans up) its kernel manager.
+    """
     import ipykernel.kernelspec
     from jupyter_client.kernelspec import KernelSpecManager
-    from jupyter_client.manager import KernelManager
+    from jupyter_client.manager import AsyncKernelManager
+    from nbclient import NotebookClient
 
     class _CurrentEnv(KernelSpecManager):
         def get_kernel_spec(self, kernel_name):
@@ -184,7 +189,14 @@ def _kernel_manager():
                 resource_dir=ipykernel.kernelspec.RESOURCES, **ipykernel.kernelspec.get_kernel_dict()
             )
 
-    return KernelManager(kernel_name="grader-current-env", kernel_spec_manager=_CurrentEnv())
+    class _Client(NotebookClient):
+        def create_kernel_manager(self):
+            self.km = AsyncKernelManager(
+                kernel_name="grader-current-env", kernel_spec_manager=_CurrentEnv(), config=self.config
+            )
+            return self.km
+
+    return _Client
 
 
 def _read_notebook(path: Path) -> tuple[nbformat.NotebookNode | None, str]:
@@ -219,8 +231,9 @@ def grade_notebook(
     question_timeout: float = DEFAULT_QUESTION_TIMEOUT,
 ) -> Result:
     """Run one submission and its hidden tests; never raises for a bad submission."""
-    from nbclient import NotebookClient
     from nbclient.exceptions import CellTimeoutError, DeadKernelError
+
+    client_class = _client_class()
 
     start = time.monotonic()
     questions = list(tests.points)
@@ -230,7 +243,7 @@ def grade_notebook(
         result.status = "invalid notebook"
         result.run_notes.append(problem + "; no points could be given")
         for q in questions:
-            result.notes[q] = "not graded: " + problem
+            result.notes[q] = "not graded (the file is not a valid notebook)"
         return result
 
     student_cells = [
@@ -264,13 +277,13 @@ def grade_notebook(
             ]
             run_nb = nbformat.v4.new_notebook(cells=cells)
             state["index"] = -1
-            client = NotebookClient(
+            client = client_class(
                 run_nb,
-                km=_kernel_manager(),
                 timeout=None,
                 timeout_func=lambda cell: max(1.0, min(cell_timeout, remaining())),
                 allow_errors=True,
                 shutdown_kernel="immediate",
+                shell_timeout_interval=1,  # notice a dead kernel within a second
                 startup_timeout=60,
                 resources={"metadata": {"path": tmp}},
                 on_cell_start=on_cell_start,
@@ -368,6 +381,7 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--cell-timeout", type=float, default=DEFAULT_CELL_TIMEOUT)
     p.add_argument("--time-limit", type=float, default=DEFAULT_TIME_LIMIT, help="per submission")
     p.add_argument("--question-timeout", type=float, default=DEFAULT_QUESTION_TIMEOUT)
+    p.add_argument("--jobs", type=int, default=1, help="submissions graded in parallel")
     args = p.parse_args(argv)
 
     tests = HiddenTests.load(args.tests)
@@ -375,9 +389,10 @@ def main(argv: list[str] | None = None) -> int:
     if not files:
         print(f"no .ipynb files under {args.submissions}", file=sys.stderr)
         return 1
-    results = []
-    for f in files:
-        student = f.relative_to(args.submissions).with_suffix("").as_posix()
+    students = [f.relative_to(args.submissions).with_suffix("").as_posix() for f in files]
+
+    def one(item: tuple[Path, str]) -> Result:
+        f, student = item
         r = grade_notebook(
             f,
             tests,
@@ -386,8 +401,11 @@ def main(argv: list[str] | None = None) -> int:
             time_limit=args.time_limit,
             question_timeout=args.question_timeout,
         )
-        results.append(r)
-        print(f"{student}: {r.total:g} / {tests.max_points:g} ({r.status}, {r.seconds:g} s)")
+        print(f"{student}: {r.total:g} / {tests.max_points:g} ({r.status}, {r.seconds:g} s)", flush=True)
+        return r
+
+    with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+        results = list(pool.map(one, zip(files, students, strict=True)))
     write_reports(results, tests, args.out)
     print(f"wrote {args.out / 'scores.csv'} and {args.out / 'feedback'}{os.sep}")
     return 0

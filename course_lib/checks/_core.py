@@ -399,3 +399,31 @@ def parallel(a: np.ndarray, b: np.ndarray, tol: float = 1e-9) -> bool:
 def close(a: object, b: object, tol: float = 1e-9) -> bool:
     a, b = np.asarray(a, float), np.asarray(b, float)
     return bool(np.allclose(a, b, rtol=tol, atol=tol * max(1.0, float(np.abs(b).max(initial=0)))))
+
+
+def as_sympy_expression(answer: object, name: str, allowed: dict[str, object]) -> object:
+    """Read a sympy expression whose symbols are among ``allowed`` (name -> Symbol).
+
+    Symbols are matched by name (so ``sp.Symbol("beta1", positive=True)`` is accepted) and
+    replaced by the ones in ``allowed``.
+    """
+    import sympy as sp
+
+    if is_unanswered(answer):
+        raise AnswerProblem("not answered yet (replace the ... by a sympy expression).", unanswered=True)
+    if answer is None:
+        raise AnswerProblem(f"{name} is None -- did a function forget to `return`?")
+    if isinstance(answer, (str, bytes, bool, np.bool_, dict, set, list, tuple)) or callable(answer):
+        raise AnswerProblem(f"{name} must be a sympy expression, but it is {_describe(answer)}.")
+    try:
+        expr = sp.sympify(answer, strict=True)
+    except (sp.SympifyError, TypeError, ValueError):
+        raise AnswerProblem(f"{name} must be a sympy expression, but it is {_describe(answer)}.") from None
+    if not isinstance(expr, sp.Expr):
+        raise AnswerProblem(f"{name} must be a sympy expression, but it is a {type(expr).__name__}.")
+    if expr.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+        raise AnswerProblem(f"{name} contains nan or infinity -- a division by zero?")
+    stray = sorted(str(s) for s in expr.free_symbols if str(s) not in allowed)
+    if stray:
+        raise AnswerProblem(f"use only the symbols {', '.join(allowed)}; {name} contains {stray}.")
+    return expr.subs({s: allowed[str(s)] for s in expr.free_symbols})

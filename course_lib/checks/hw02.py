@@ -7,11 +7,14 @@ the constraints themselves with the student's numbers and never print an expecte
 
 from __future__ import annotations
 
+from functools import cache
+
 import numpy as np
 
 from ._core import (
     AnswerProblem,
     as_number,
+    as_sympy_expression,
     as_vector,
     call_answer,
     close,
@@ -86,6 +89,7 @@ def _q3(func):
     return ok(f"correct on {len(_Q3_CASES)} cases (including 3-D and very different lengths).")
 
 
+@cache
 def _chain_rule_coefficient(order: int, k: int):
     """Coefficient of q^{(k)}(1) in r^{(order)}(0), derived here by differentiating q(u(t))."""
     import sympy as sp
@@ -105,20 +109,10 @@ def _chain_rule_coefficient(order: int, k: int):
 
 @register("hw02.q4", "answer_q4", "coefficient of q''(1) in the fourth Beta-constraint (sympy)")
 def _q4(answer):
-    if answer is Ellipsis or answer is None:
-        raise AnswerProblem("not answered yet (replace the ... by a sympy expression).", unanswered=True)
     import sympy as sp
 
-    try:
-        expr = sp.sympify(answer)
-    except (sp.SympifyError, TypeError, ValueError):
-        raise AnswerProblem("answer_q4 must be a sympy expression in beta1, ..., beta4.") from None
     expected, betas = _chain_rule_coefficient(4, 2)
-    names = {str(b) for b in betas}
-    stray = sorted(str(s) for s in expr.free_symbols if str(s) not in names)
-    if stray:
-        return fail(f"use only the symbols beta1, ..., beta4 (sp.symbols('beta1:5')); found {stray}.")
-    expr = expr.subs({s: betas[int(str(s)[4:]) - 1] for s in expr.free_symbols})
+    expr = as_sympy_expression(answer, "answer_q4", {str(b): b for b in betas})
     if sp.expand(expr - expected) == 0:
         return ok("correct -- and it is what the chain rule gives, not what seed 001 eq. (2.7) prints.")
     b1, b2 = betas[0], betas[1]

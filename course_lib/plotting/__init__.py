@@ -14,6 +14,15 @@ construction diagrams), :mod:`.blending` (blending functions), :mod:`.surfaces3d
 
 from __future__ import annotations
 
+from .blending import BlendingArtists, blending_functions, plot_blending_functions
+from .constructions import (
+    Diagram,
+    plot_beta_spline_construction,
+    plot_farin_boehm,
+    plot_g1_stitch,
+    plot_knot_joint_construction,
+    plot_stitching,
+)
 from .curvature import (
     CombArtists,
     CurvatureProfileArtists,
@@ -23,26 +32,39 @@ from .curvature import (
 )
 from .curves import CurveArtists, PointsArtists, plot_control_polygon, plot_curve
 from .style import COURSE_RC, OKABE_ITO, ROLE_COLORS, course_style, new_figure, segment_color
+from .surfaces3d import PatchPairArtists, plot_patch, plot_patch_pair
 from .vectors import FrameArtists, OsculatingCircleArtists, plot_frame, plot_osculating_circle
 
 __all__ = [
     "COURSE_RC",
     "OKABE_ITO",
     "ROLE_COLORS",
+    "BlendingArtists",
     "CombArtists",
     "CurvatureProfileArtists",
     "CurveArtists",
+    "Diagram",
     "FrameArtists",
     "OsculatingCircleArtists",
+    "PatchPairArtists",
     "PointsArtists",
+    "blending_functions",
     "course_style",
     "curvature_profile",
     "new_figure",
+    "plot_beta_spline_construction",
+    "plot_blending_functions",
     "plot_control_polygon",
     "plot_curvature_comb",
     "plot_curvature_profile",
     "plot_curve",
+    "plot_farin_boehm",
     "plot_frame",
+    "plot_g1_stitch",
+    "plot_knot_joint_construction",
     "plot_osculating_circle",
+    "plot_patch",
+    "plot_patch_pair",
+    "plot_stitching",
     "segment_color",
 ]

@@ -67,8 +67,19 @@ class BlendingArtists:
     joint_lines: object
 
 
-_CYCLE = [OKABE_ITO[k] for k in ("blue", "vermillion", "bluish_green", "orange",
-                                 "reddish_purple", "sky_blue", "black", "yellow")]
+_CYCLE = [
+    OKABE_ITO[k]
+    for k in (
+        "blue",
+        "vermillion",
+        "bluish_green",
+        "orange",
+        "reddish_purple",
+        "sky_blue",
+        "black",
+        "yellow",
+    )
+]
 
 
 def plot_blending_functions(
@@ -104,9 +115,12 @@ def plot_blending_functions(
     for k in range(n):
         strong = highlight is None or k == highlight
         lc = LineCollection(
-            list(np.stack([t, b[k]], axis=-1)), colors=_CYCLE[k % len(_CYCLE)],
+            list(np.stack([t, b[k]], axis=-1)),
+            colors=_CYCLE[k % len(_CYCLE)],
             linewidths=SIZES["curve"] * (0.8 if strong else 0.35),
-            alpha=1.0 if strong else 0.6, label=f"$b_{{{k}}}$" if labels else None, zorder=3,
+            alpha=1.0 if strong else 0.6,
+            label=f"$b_{{{k}}}$" if labels else None,
+            zorder=3,
         )
         ax.add_collection(lc)
         lines.append(lc)
@@ -117,11 +131,23 @@ def plot_blending_functions(
         if np.any(nz):
             lo = float(t[np.argmax(nz), 0])
             hi = float(t[len(nz) - 1 - np.argmax(nz[::-1]), -1])
-            support = ax.axvspan(lo, hi, color=_CYCLE[highlight % len(_CYCLE)], alpha=0.12,
-                                 zorder=0, label=f"support of $b_{{{highlight}}}$")
+            support = ax.axvspan(
+                lo,
+                hi,
+                color=_CYCLE[highlight % len(_CYCLE)],
+                alpha=0.12,
+                zorder=0,
+                label=f"support of $b_{{{highlight}}}$",
+            )
     trans = blended_transform_factory(ax.transData, ax.transAxes)
-    jl = LineCollection([[(x, 0.0), (x, 1.0)] for x in t[1:, 0]], transform=trans,
-                        colors="#999999", linestyles=":", linewidths=1.0, zorder=1)
+    jl = LineCollection(
+        [[(x, 0.0), (x, 1.0)] for x in t[1:, 0]],
+        transform=trans,
+        colors="#999999",
+        linestyles=":",
+        linewidths=1.0,
+        zorder=1,
+    )
     ax.add_collection(jl, autolim=False)
     ax.axhline(0.0, color="#999999", lw=0.8, zorder=0)
     ax.set_xlim(float(t[0, 0]), float(t[-1, -1]))

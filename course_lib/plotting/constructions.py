@@ -100,24 +100,40 @@ def _draw(ax, diagram: Diagram, *, label_offsets: Mapping[str, tuple] | None = N
         st = _STYLES[style]
         P = np.array([diagram.points[n] for n in names])
         (ln,) = ax.plot(
-            P[:, 0], P[:, 1], color=st["color"], lw=st["lw"], ls=st["ls"],
-            marker=st["marker"], ms=SIZES["control_point"] if st["marker"] == "o" else 12,
-            mfc="white" if st["marker"] == "o" else st["color"], mec=st["color"], mew=1.6,
+            P[:, 0],
+            P[:, 1],
+            color=st["color"],
+            lw=st["lw"],
+            ls=st["ls"],
+            marker=st["marker"],
+            ms=SIZES["control_point"] if st["marker"] == "o" else 12,
+            mfc="white" if st["marker"] == "o" else st["color"],
+            mec=st["color"],
+            mew=1.6,
             zorder=5 if style in ("q", "r", "V") else 4,
         )
         diagram.artists[f"line:{key}"] = ln
     for name, text in diagram.labels.items():
         diagram.artists[f"label:{name}"] = ax.annotate(
-            text, tuple(diagram.points[name]), xytext=offs.get(name, (7, 7)),
-            textcoords="offset points", fontsize=SIZES["label"], zorder=8,
+            text,
+            tuple(diagram.points[name]),
+            xytext=offs.get(name, (7, 7)),
+            textcoords="offset points",
+            fontsize=SIZES["label"],
+            zorder=8,
             ha="left" if offs.get(name, (7, 7))[0] >= 0 else "right",
             va="bottom" if offs.get(name, (7, 7))[1] >= 0 else "top",
             bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.7),
         )
     for i, (a, b, text, side) in enumerate(diagram.ratios):
         diagram.artists[f"ratio:{i}"] = ax.text(
-            *diagram._ratio_pos(a, b, side), text, fontsize=SIZES["label"] - 1,
-            color=OKABE_ITO["bluish_green"], ha="center", va="center", zorder=8,
+            *diagram._ratio_pos(a, b, side),
+            text,
+            fontsize=SIZES["label"] - 1,
+            color=OKABE_ITO["bluish_green"],
+            ha="center",
+            va="center",
+            zorder=8,
             bbox=dict(boxstyle="round,pad=0.15", fc="white", ec=OKABE_ITO["bluish_green"], lw=0.8),
         )
     ax.set_aspect("equal", adjustable="datalim")
@@ -351,14 +367,31 @@ def plot_beta_spline_construction(
     )
     _draw(ax, diagram)
     J = np.array([pts[f"J{j}"] for j in range(len(segs) + 1)])
-    (jm,) = ax.plot(J[:, 0], J[:, 1], ls="none", marker="D", ms=SIZES["joint"] * 0.85,
-                    mfc=ROLE_COLORS["joint"], mec="black", zorder=7, label="junction vertices")
+    (jm,) = ax.plot(
+        J[:, 0],
+        J[:, 1],
+        ls="none",
+        marker="D",
+        ms=SIZES["joint"] * 0.85,
+        mfc=ROLE_COLORS["joint"],
+        mec="black",
+        zorder=7,
+        label="junction vertices",
+    )
     diagram.artists["junctions"] = jm
     if d >= 2:
         inner = np.array([pts[k] for k in pts if k.startswith("I")])
-        (im,) = ax.plot(inner[:, 0], inner[:, 1], ls="none", marker="s", ms=6.5,
-                        mfc=OKABE_ITO["bluish_green"], mec="black", zorder=7,
-                        label="interior Bézier vertices")
+        (im,) = ax.plot(
+            inner[:, 0],
+            inner[:, 1],
+            ls="none",
+            marker="s",
+            ms=6.5,
+            mfc=OKABE_ITO["bluish_green"],
+            mec="black",
+            zorder=7,
+            label="interior Bézier vertices",
+        )
         diagram.artists["interior"] = im
     return diagram
 

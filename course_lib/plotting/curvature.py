@@ -147,37 +147,67 @@ def plot_curvature_comb(
         scale = _auto_scale(curve, dg.curvature_vector(curve, t))
     feet, tips = comb_teeth(curve, n, scale, sgn)
     (teeth,) = ax.plot(
-        *_teeth_path(feet, tips), color=ROLE_COLORS["comb"], lw=SIZES["comb"], zorder=zorder,
+        *_teeth_path(feet, tips),
+        color=ROLE_COLORS["comb"],
+        lw=SIZES["comb"],
+        zorder=zorder,
         alpha=0.6,
-        label="curvature comb", solid_capstyle="butt",
+        label="curvature comb",
+        solid_capstyle="butt",
     )
     env = LineCollection(
-        list(tips), colors=[_envelope_color(i) for i in range(curve.n_segments)],
-        linewidths=SIZES["comb_envelope"], zorder=zorder, alpha=0.9,
+        list(tips),
+        colors=[_envelope_color(i) for i in range(curve.n_segments)],
+        linewidths=SIZES["comb_envelope"],
+        zorder=zorder,
+        alpha=0.9,
     )
     ax.add_collection(env)
     ax.autoscale_view()
     return CombArtists(teeth, env, float(scale), n, sgn)
 
 
-def curvature_profile(curve, per_segment: int = 80, *, signed: bool = True, x: str = "arc_length"):
+def curvature_profile(
+    curve,
+    per_segment: int = 80,
+    *,
+    signed: bool = True,
+    x: str = "arc_length",
+    arc_length_every: int = 1,
+):
     """Samples for :func:`plot_curvature_profile`: ``(X, kappa)``, each of shape ``(S, n)``.
 
     ``X`` is the arc length from the start (``x="arc_length"``) or the global
     parameter (``x="parameter"``); ``kappa`` is the signed curvature (plane curves,
     ``signed=True``) or ``|kappa|``.  Row ``i`` is segment ``i``, its last entry the
     one-sided limit at the joint.
+
+    ``arc_length_every = k > 1`` computes the arc length (the costly part) exactly at
+    every k-th sample and at both ends of every segment, and linearly in the parameter
+    between them -- for live widgets; the joints stay exact.
     """
     if x not in ("arc_length", "parameter"):
         raise ValueError(f"x must be 'arc_length' or 'parameter'; got {x!r}")
+    every = check_integer(arc_length_every, "arc_length_every", minimum=1)
     t = segment_grid(curve, per_segment)
     flat = t.ravel()
     if signed and curve.dim == 2:
         k = dg.signed_curvature(curve, flat)
     else:
         k = dg.curvature(curve, flat)
-    X = dg.cumulative_arc_length(curve, flat) if x == "arc_length" else flat
-    return np.asarray(X).reshape(t.shape), np.asarray(k).reshape(t.shape)
+    if x == "parameter":
+        X = t.copy()
+    elif every == 1:
+        X = np.asarray(dg.cumulative_arc_length(curve, flat)).reshape(t.shape)
+    else:
+        n = t.shape[1]
+        idx = np.unique(np.r_[0:n:every, n - 1])
+        S = np.asarray(dg.cumulative_arc_length(curve, t[:, idx].ravel())).reshape(-1, idx.size)
+        u = np.linspace(0.0, 1.0, n)  # every row is affine in u: the same weights for all
+        j = np.clip(np.searchsorted(idx, np.arange(n), side="right") - 1, 0, idx.size - 2)
+        w = (u - u[idx[j]]) / (u[idx[j + 1]] - u[idx[j]])
+        X = S[:, j] * (1.0 - w) + S[:, j + 1] * w
+    return X, np.asarray(k).reshape(t.shape)
 
 
 @dataclass
@@ -200,13 +230,20 @@ class CurvatureProfileArtists:
     per_segment: int
     signed: bool
     x: str
+    arc_length_every: int = 1
 
     @property
     def artists(self) -> list:
         return [self.lines, self.ends, self.joint_lines]
 
     def update(self, curve, *, rescale: bool = True) -> None:
-        X, k = curvature_profile(curve, self.per_segment, signed=self.signed, x=self.x)
+        X, k = curvature_profile(
+            curve,
+            self.per_segment,
+            signed=self.signed,
+            x=self.x,
+            arc_length_every=self.arc_length_every,
+        )
         self.lines.set_segments(list(np.stack([X, k], axis=-1)))
         self.lines.set_color([segment_color(i) for i in range(curve.n_segments)])
         ex = np.stack([X[:, 0], X[:, -1]], axis=1).ravel()
@@ -229,6 +266,7 @@ def plot_curvature_profile(
     signed: bool = True,
     x: str = "arc_length",
     labels: bool = True,
+    arc_length_every: int = 1,
 ) -> CurvatureProfileArtists:
     """Curvature against arc length (or parameter), each segment drawn on its own.
 
@@ -244,11 +282,15 @@ def plot_curvature_profile(
     from matplotlib.transforms import blended_transform_factory
 
     per_segment = check_integer(per_segment, "per_segment", minimum=2)
-    X, k = curvature_profile(curve, per_segment, signed=signed, x=x)
+    X, k = curvature_profile(
+        curve, per_segment, signed=signed, x=x, arc_length_every=arc_length_every
+    )
     S = curve.n_segments
     lines = LineCollection(
-        list(np.stack([X, k], axis=-1)), colors=[segment_color(i) for i in range(S)],
-        linewidths=SIZES["curve"] * 0.8, zorder=3,
+        list(np.stack([X, k], axis=-1)),
+        colors=[segment_color(i) for i in range(S)],
+        linewidths=SIZES["curve"] * 0.8,
+        zorder=3,
     )
     ax.add_collection(lines)
     ex = np.stack([X[:, 0], X[:, -1]], axis=1).ravel()
@@ -256,14 +298,18 @@ def plot_curvature_profile(
     (ends,) = ax.plot(ex, ek, ls="none", marker="o", ms=5, color="black", zorder=4)
     trans = blended_transform_factory(ax.transData, ax.transAxes)
     jl = LineCollection(
-        [[(xj, 0.0), (xj, 1.0)] for xj in X[1:, 0]], transform=trans, colors=ROLE_COLORS["joint"],
-        linestyles=":", linewidths=1.5, zorder=1,
+        [[(xj, 0.0), (xj, 1.0)] for xj in X[1:, 0]],
+        transform=trans,
+        colors=ROLE_COLORS["joint"],
+        linestyles=":",
+        linewidths=1.5,
+        zorder=1,
     )
     ax.add_collection(jl, autolim=False)
     ax.axhline(0.0, color="#999999", lw=0.8, zorder=0)
     if labels:
         ax.set_xlabel("arc length s" if x == "arc_length" else "parameter t")
         ax.set_ylabel("signed curvature κ" if (signed and curve.dim == 2) else "curvature |κ|")
-    arts = CurvatureProfileArtists(lines, ends, jl, per_segment, signed, x)
+    arts = CurvatureProfileArtists(lines, ends, jl, per_segment, signed, x, arc_length_every)
     arts.update(curve, rescale=True)
     return arts

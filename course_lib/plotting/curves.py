@@ -237,12 +237,24 @@ def plot_control_polygon(
     color = color or ROLE_COLORS["control_point"]
     path = np.vstack([P, P[:1]]) if closed else P
     (line,) = ax.plot(
-        path[:, 0], path[:, 1], color=color, lw=SIZES["polygon"] * 1.2, ls=linestyle,
-        zorder=zorder, label=label,
+        path[:, 0],
+        path[:, 1],
+        color=color,
+        lw=SIZES["polygon"] * 1.2,
+        ls=linestyle,
+        zorder=zorder,
+        label=label,
     )
     (markers,) = ax.plot(
-        P[:, 0], P[:, 1], ls="none", marker=marker, ms=markersize or SIZES["control_point"],
-        mfc=color, mec="white", mew=1.0, zorder=zorder + 0.5,
+        P[:, 0],
+        P[:, 1],
+        ls="none",
+        marker=marker,
+        ms=markersize or SIZES["control_point"],
+        mfc=color,
+        mec="white",
+        mew=1.0,
+        zorder=zorder + 0.5,
     )
     texts = []
     if labels is not None:
@@ -250,8 +262,13 @@ def plot_control_polygon(
         for name, p in zip(names, P, strict=False):
             texts.append(
                 ax.annotate(
-                    name, p, xytext=(6, 6), textcoords="offset points", fontsize=SIZES["label"],
-                    color=color, zorder=zorder + 1,
+                    name,
+                    p,
+                    xytext=(6, 6),
+                    textcoords="offset points",
+                    fontsize=SIZES["label"],
+                    color=color,
+                    zorder=zorder + 1,
                 )
             )
     ax.set_aspect("equal", adjustable="datalim")

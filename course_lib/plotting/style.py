@@ -167,6 +167,7 @@ def new_figure(
             ax = fig.subplots(nrows, ncols, subplot_kw=kw or None)
     return fig, ax
 
+
 #: Line widths and marker sizes used by the plotting functions (explicit, so a picture
 #: looks the same whether or not it was drawn inside :func:`course_style`).
 SIZES = MappingProxyType(

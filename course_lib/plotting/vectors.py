@@ -63,25 +63,35 @@ class FrameArtists:
         t = np.atleast_1d(np.asarray(t, dtype=float))
         p = curve.evaluate(t)
         self.point.set_data(p[:, 0], p[:, 1])
+        # T = dc/ds and K = d2c/ds2 in one call (seed 000 §6)
+        T, K = dg.arc_length_derivatives(curve, t, 2)
         if self.tangent is not None:
             self.tangent.set_offsets(p)
-            T = dg.unit_tangent(curve, t) * self.length
-            self.tangent.set_UVC(T[:, 0], T[:, 1])
+            self.tangent.set_UVC(T[:, 0] * self.length, T[:, 1] * self.length)
         if self.normal is not None:
             self.normal.set_offsets(p)
-            N = dg.unit_normal(curve, t) * self.length
-            self.normal.set_UVC(N[:, 0], N[:, 1])
+            self.normal.set_UVC(-T[:, 1] * self.length, T[:, 0] * self.length)  # N = T turned +90°
         if self.curvature is not None:
             self.curvature.set_offsets(p)
-            K = dg.curvature_vector(curve, t) * self.curvature_scale
-            self.curvature.set_UVC(K[:, 0], K[:, 1])
+            self.curvature.set_UVC(K[:, 0] * self.curvature_scale, K[:, 1] * self.curvature_scale)
 
 
 def _quiver(ax, p, v, color, label, zorder):
     return ax.quiver(
-        p[:, 0], p[:, 1], v[:, 0], v[:, 1],
-        angles="xy", scale_units="xy", scale=1.0, color=color, width=0.006,
-        headwidth=4.0, headlength=5.0, headaxislength=4.5, zorder=zorder, label=label,
+        p[:, 0],
+        p[:, 1],
+        v[:, 0],
+        v[:, 1],
+        angles="xy",
+        scale_units="xy",
+        scale=1.0,
+        color=color,
+        width=0.006,
+        headwidth=4.0,
+        headlength=5.0,
+        headaxislength=4.5,
+        zorder=zorder,
+        label=label,
     )
 
 
@@ -131,8 +141,13 @@ def plot_frame(
         curvature_scale = length**2
     p = curve.evaluate(tt)
     (pt,) = ax.plot(
-        p[:, 0], p[:, 1], ls="none", marker="o", ms=SIZES["moving_point"],
-        color=ROLE_COLORS["moving_point"], zorder=zorder + 1,
+        p[:, 0],
+        p[:, 1],
+        ls="none",
+        marker="o",
+        ms=SIZES["moving_point"],
+        color=ROLE_COLORS["moving_point"],
+        zorder=zorder + 1,
     )
     qt = qn = qk = None
     if tangent:
@@ -144,8 +159,12 @@ def plot_frame(
     if curvature:
         v = dg.curvature_vector(curve, tt) * curvature_scale
         qk = _quiver(
-            ax, p, v, ROLE_COLORS["curvature"],
-            "curvature vector dT/ds" if labels else None, zorder,
+            ax,
+            p,
+            v,
+            ROLE_COLORS["curvature"],
+            "curvature vector dT/ds" if labels else None,
+            zorder,
         )
     return FrameArtists(pt, qt, qn, qk, float(length), float(curvature_scale))
 
@@ -189,14 +208,38 @@ def plot_osculating_circle(ax, curve, t: float, *, zorder: float = 2) -> Osculat
     from matplotlib.patches import Circle
 
     circ = Circle(
-        (0.0, 0.0), 1.0, fill=False, ec=ROLE_COLORS["circle"], lw=SIZES["construction"] * 1.3,
-        ls="-", zorder=zorder, label="osculating circle",
+        (0.0, 0.0),
+        1.0,
+        fill=False,
+        ec=ROLE_COLORS["circle"],
+        lw=SIZES["construction"] * 1.3,
+        ls="-",
+        zorder=zorder,
+        label="osculating circle",
     )
     ax.add_artist(circ)  # not add_patch: a huge circle must not rescale the view
-    (c,) = ax.plot([0.0], [0.0], ls="none", marker="+", ms=12, mew=2,
-                   color=ROLE_COLORS["circle"], zorder=zorder, scalex=False, scaley=False)
-    (r,) = ax.plot([0.0, 0.0], [0.0, 0.0], color=ROLE_COLORS["circle"], lw=1.0, ls=":",
-                   zorder=zorder, scalex=False, scaley=False)
+    (c,) = ax.plot(
+        [0.0],
+        [0.0],
+        ls="none",
+        marker="+",
+        ms=12,
+        mew=2,
+        color=ROLE_COLORS["circle"],
+        zorder=zorder,
+        scalex=False,
+        scaley=False,
+    )
+    (r,) = ax.plot(
+        [0.0, 0.0],
+        [0.0, 0.0],
+        color=ROLE_COLORS["circle"],
+        lw=1.0,
+        ls=":",
+        zorder=zorder,
+        scalex=False,
+        scaley=False,
+    )
     arts = OsculatingCircleArtists(circ, c, r)
     arts.update(curve, t)
     return arts

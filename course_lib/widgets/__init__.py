@@ -8,6 +8,12 @@ drive without a browser, updates its figure in place, and falls back to a static
 figure when widgets are unavailable (or with ``static=True``).  Widgets carry the CSS
 classes of CONTRIBUTING.md (``cl-demo``, ``cl-slider-beta1``, ``cl-slider-beta2``,
 ``cl-slider-t``, ``cl-slider-knot``, ``cl-report``, ``cl-canvas``, ``cl-warning``).
+
+Lecture mode (a projector, no code on screen): Voilà renders a notebook's outputs
+with live widgets, e.g. ``.venv/bin/voila notebooks/04_beta_splines.ipynb`` (add
+``--no-browser --port=8866`` on a server).  JupyterLab also works; the RISE slide view
+does not render ipywidgets or ipympl (jupyterlab-contrib/rise #119).  Offline, Voilà's
+default template asks a CDN for FontAwesome: two harmless console errors.
 """
 
 from __future__ import annotations

@@ -21,17 +21,33 @@ def _slider(spec: SliderSpec, value: float):
     if spec.log:
         if spec.min <= 0:
             raise ValueError(f"a log slider needs min > 0; {spec.name} has min {spec.min}")
+        # exponent bounds on the step grid, so that 10**0 = 1 is a slider position
+        # (otherwise the browser snaps an initial β1 = 1 to 0.9976)
+        lo = float(np.ceil(np.log10(spec.min) / spec.step - 1e-9) * spec.step)
+        hi = float(np.floor(np.log10(spec.max) / spec.step + 1e-9) * spec.step)
         s = w.FloatLogSlider(
-            value=float(np.clip(value, spec.min, spec.max)), base=10,
-            min=float(np.log10(spec.min)), max=float(np.log10(spec.max)),
-            step=spec.step, description=spec.description, continuous_update=True,
-            readout_format=".3g", style=style, layout=layout,
+            value=float(np.clip(value, 10.0**lo, 10.0**hi)),
+            base=10,
+            min=lo,
+            max=hi,
+            step=spec.step,
+            description=spec.description,
+            continuous_update=True,
+            readout_format=".3g",
+            style=style,
+            layout=layout,
         )
     else:
         s = w.FloatSlider(
-            value=float(np.clip(value, spec.min, spec.max)), min=spec.min, max=spec.max,
-            step=spec.step, description=spec.description, continuous_update=True,
-            readout_format=".3g", style=style, layout=layout,
+            value=float(np.clip(value, spec.min, spec.max)),
+            min=spec.min,
+            max=spec.max,
+            step=spec.step,
+            description=spec.description,
+            continuous_update=True,
+            readout_format=".3g",
+            style=style,
+            layout=layout,
         )
     s.add_class(spec.css)
     return s
@@ -56,8 +72,10 @@ def assemble_curve_demo(
     per_joint = any(s.per_joint for s in sliders) and nj > 1
     if nj >= 1:
         joint = w.Dropdown(
-            options=[(f"joint {j}", j) for j in range(nj)], value=st.joint,
-            description="joint", style={"description_width": "3em"},
+            options=[(f"joint {j}", j) for j in range(nj)],
+            value=st.joint,
+            description="joint",
+            style={"description_width": "3em"},
             layout=w.Layout(width="12em"),
         )
         joint.add_class("cl-joint")
@@ -84,12 +102,19 @@ def assemble_curve_demo(
     if knots:
         L = st.curve.n_segments
         ksel = w.Dropdown(
-            options=[(f"t{i}", i) for i in range(1, L)], value=1, description="knot",
-            style={"description_width": "3em"}, layout=w.Layout(width="10em"),
+            options=[(f"t{i}", i) for i in range(1, L)],
+            value=1,
+            description="knot",
+            style={"description_width": "3em"},
+            layout=w.Layout(width="10em"),
         )
-        kval = w.FloatSlider(description="value", readout_format=".3g",
-                             style={"description_width": "3em"}, layout=w.Layout(width="22em"),
-                             continuous_update=True)
+        kval = w.FloatSlider(
+            description="value",
+            readout_format=".3g",
+            style={"description_width": "3em"},
+            layout=w.Layout(width="22em"),
+            continuous_update=True,
+        )
         kval.add_class("cl-slider-knot")
         demo.controls["knot_index"] = ksel
         demo.controls["knot"] = kval
@@ -121,9 +146,17 @@ def assemble_curve_demo(
         rows.append(w.HBox([ksel, kval]))
 
     a, b = st.curve.domain
-    tsl = w.FloatSlider(value=st.t, min=a, max=b, step=(b - a) / 400, description="t",
-                        readout_format=".3g", continuous_update=True,
-                        style={"description_width": "3em"}, layout=w.Layout(width="22em"))
+    tsl = w.FloatSlider(
+        value=st.t,
+        min=a,
+        max=b,
+        step=(b - a) / 400,
+        description="t",
+        readout_format=".3g",
+        continuous_update=True,
+        style={"description_width": "3em"},
+        layout=w.Layout(width="22em"),
+    )
     tsl.add_class("cl-slider-t")
     demo.controls["t"] = tsl
     tsl.observe(demo.guard(lambda ch: st.set_t(ch["new"])), names="value")
@@ -136,8 +169,9 @@ def assemble_curve_demo(
         ("circle", "show_circle", "osculating circle"),
         ("curvature", "show_curvature", "κ(s) plot"),
     ):
-        cb = w.Checkbox(value=getattr(st, flag), description=text, indent=False,
-                        layout=w.Layout(width="auto"))
+        cb = w.Checkbox(
+            value=getattr(st, flag), description=text, indent=False, layout=w.Layout(width="auto")
+        )
         cb.add_class(f"cl-check-{key}")
         cb.observe(demo.guard(lambda ch, flag=flag: st.set_flag(flag, ch["new"])), names="value")
         demo.controls[key] = cb
@@ -147,6 +181,7 @@ def assemble_curve_demo(
     rows.extend(extra_rows)
 
     if nj >= 1:
+
         def on_joint(change):
             st.select_joint(change["new"])
 
@@ -162,6 +197,8 @@ def assemble_curve_demo(
     demo.build_widgets(rows)
     if draggable:
         demo.dragger = PointDragger(
-            demo.view.ax, lambda: st.points, demo.guard(st.drag),
+            demo.view.ax,
+            lambda: st.points,
+            demo.guard(st.drag),
         )
     return demo

@@ -46,9 +46,7 @@ def joint_report(curve, j: int, max_order: int = 3):
     from ..curve import PiecewiseBezier
 
     k = curve.knots
-    pair = PiecewiseBezier(
-        curve.segments[j : j + 2], k[j : j + 3] if curve.has_knots else None
-    )
+    pair = PiecewiseBezier(curve.segments[j : j + 2], k[j : j + 3] if curve.has_knots else None)
     (rep,) = curve_continuity(pair, max_order=max_order)
     return replace(rep, index=j)
 
@@ -383,10 +381,19 @@ class CurveDemoView:
         )
         self.frame = plot_frame(self.ax, c, state.t, labels=False)
         self.circle = plot_osculating_circle(self.ax, c, state.t)
-        self.profile = plot_curvature_profile(self.kax, c, per_segment=profile_samples)
+        self.profile = plot_curvature_profile(
+            self.kax, c, per_segment=profile_samples, arc_length_every=3
+        )
         (self.profile_point,) = self.kax.plot([], [], "o", color="black", ms=7, zorder=6)
         (self.selected,) = self.ax.plot(
-            [], [], ls="none", marker="o", ms=18, mfc="none", mec=OKABE_ITO["orange"], mew=2.5,
+            [],
+            [],
+            ls="none",
+            marker="o",
+            ms=18,
+            mfc="none",
+            mec=OKABE_ITO["orange"],
+            mew=2.5,
             zorder=7,
         )
         self.kax.set_title("curvature along the curve", fontsize=12)
@@ -485,11 +492,19 @@ class CurveDemoView:
             self.selected.set_data([], [])
         # each picture of derivatives may fail for a degenerate (irregular) curve
         for name, flag, arts, fn in (
-            ("curvature comb", state.show_comb, self.comb.artists, lambda: self.comb.update(c)),
-            ("tangent and curvature vectors", state.show_tangents, self.frame.artists,
-             lambda: self.frame.update(c, state.t)),
-            ("curvature plot", state.show_curvature,
-             [*self.profile.artists, self.profile_point], lambda: self._profile(c, state)),
+            ("curvature comb", state.show_comb, self.comb.artists, lambda: self._comb(c)),
+            (
+                "tangent and curvature vectors",
+                state.show_tangents,
+                self.frame.artists,
+                lambda: self.frame.update(c, state.t),
+            ),
+            (
+                "curvature plot",
+                state.show_curvature,
+                [*self.profile.artists, self.profile_point],
+                lambda: self._profile(c, state),
+            ),
         ):
             if not flag:
                 self._hide(arts)
@@ -520,6 +535,19 @@ class CurveDemoView:
             state.warning = f"{state.warning} {extra}".strip()
         self.render()
         return problems
+
+    def _comb(self, c) -> None:
+        """Update the comb; rescale it only when its longest tooth leaves a wide band
+        (the scale stays fixed while the curvature changes moderately, so the eye can
+        compare; a tooth longer than the picture would hide everything else)."""
+        self.comb.update(c)
+        x0, x1 = self.ax.get_xlim()
+        size = x1 - x0
+        teeth = self.comb.tooth_array()
+        longest = float(np.nanmax(np.linalg.norm(teeth[:, 1] - teeth[:, 0], axis=1)))
+        if longest > 0.45 * size or 0 < longest < 0.03 * size:
+            self.comb.scale *= 0.15 * size / longest
+            self.comb.update(c)
 
     def _profile(self, c, state) -> None:
         self.profile.update(c, rescale=False)
@@ -630,10 +658,8 @@ class Demo:
         self.output = w.Output(layout=w.Layout(max_height="12em", overflow="auto"))
         self.output.add_class("cl-output")
         controls = w.VBox([r for r in rows if r is not None])
-        side = w.VBox([controls, self.warning, self.report], layout=w.Layout(min_width="22em"))
-        self.widget = w.VBox(
-            [self.view.fig.canvas, w.HBox([side]), self.output],
-        )
+        side = w.VBox([self.warning, self.report], layout=w.Layout(margin="0 0 0 1em"))
+        self.widget = w.VBox([self.view.fig.canvas, w.HBox([controls, side]), self.output])
         self.widget.add_class("cl-demo")
         if hasattr(self.state, "listeners"):
             self.state.listeners.append(self.refresh)

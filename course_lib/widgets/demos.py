@@ -61,7 +61,11 @@ def _finish(
 ) -> Demo:
     static = _static(static)
     view = CurveDemoView(
-        state, static=static, design_labels=design_labels, extras=extras, title=title,
+        state,
+        static=static,
+        design_labels=design_labels,
+        extras=extras,
+        title=title,
         design_polygon=design_polygon,
     )
     demo = Demo(state, view, static=static)
@@ -115,8 +119,13 @@ def curvature_comb_demo(curve=None, *, static: bool | None = None) -> Demo:
         return PiecewiseBezier([P[rows] for rows in index], knots, info=curve.info)
 
     state = CurveDemoState(build, np.array(points), {}, show_circle=True)
-    return _finish(state, static=static, name="curvature comb", design_polygon=False,
-                   title="drag the control points")
+    return _finish(
+        state,
+        static=static,
+        name="curvature comb",
+        design_polygon=False,
+        title="drag the control points",
+    )
 
 
 # ------------------------------------------------------- constructions (H2)
@@ -126,8 +135,16 @@ def _per_joint(value, n: int) -> np.ndarray:
 
 
 _CR_DEFAULT = [[0, 0], [1, 2], [3, 2.5], [4.5, 0.5], [6.5, 1], [7.5, 3], [9, 2.5]]
-_BETA_DEFAULT = [[0, 0], [0.5, 2.5], [2.5, 3.2], [4, 0.8], [6, 0.4], [7.5, 2.8], [9.5, 3.0],
-                 [10.5, 0.8]]
+_BETA_DEFAULT = [
+    [0, 0],
+    [0.5, 2.5],
+    [2.5, 3.2],
+    [4, 0.8],
+    [6, 0.4],
+    [7.5, 2.8],
+    [9.5, 3.0],
+    [10.5, 0.8],
+]
 
 
 def catmull_rom_demo(points=None, beta1=1.0, *, static: bool | None = None) -> Demo:
@@ -153,8 +170,14 @@ def catmull_rom_demo(points=None, beta1=1.0, *, static: bool | None = None) -> D
         return catmull_rom(P, beta1=_uniform(params["beta1"]))
 
     state = CurveDemoState(build, P, {"beta1": b}, min_points=4)
-    return _finish(state, static=static, name="Catmull-Rom", sliders=[BETA1],
-                   design_labels="$V_{{{i}}}$", title="Catmull-Rom spline with β₁")
+    return _finish(
+        state,
+        static=static,
+        name="Catmull-Rom",
+        sliders=[BETA1],
+        design_labels="$V_{{{i}}}$",
+        title="Catmull-Rom spline with β₁",
+    )
 
 
 def _uniform(values):
@@ -215,9 +238,13 @@ def beta_spline_demo(
         sliders = [BETA1, BETA2]
     state = CurveDemoState(build, P, params, min_points=degree + 1)
     return _finish(
-        state, static=static, name="Beta-spline", sliders=sliders, design_labels="$V_{{{i}}}$",
-        extras=[_junction_marks], title=f"{'quadratic G1' if degree == 2 else 'cubic G2'} "
-        "Beta-spline",
+        state,
+        static=static,
+        name="Beta-spline",
+        sliders=sliders,
+        design_labels="$V_{{{i}}}$",
+        extras=[_junction_marks],
+        title=f"{'quadratic G1' if degree == 2 else 'cubic G2'} Beta-spline",
     )
 
 
@@ -225,8 +252,9 @@ def _junction_marks(view):
     """Interior Bézier vertices (squares) of the Beta-spline, kept up to date."""
     from ..plotting.style import OKABE_ITO
 
-    (art,) = view.ax.plot([], [], ls="none", marker="s", ms=6, mfc=OKABE_ITO["bluish_green"],
-                          mec="black", zorder=6)
+    (art,) = view.ax.plot(
+        [], [], ls="none", marker="s", ms=6, mfc=OKABE_ITO["bluish_green"], mec="black", zorder=6
+    )
 
     def update(state):
         inner = np.vstack([s[1:-1] for s in state.curve.segments])
@@ -235,9 +263,7 @@ def _junction_marks(view):
     return update
 
 
-def g2_stitch_demo(
-    V=None, beta1=1.0, beta2=0.0, W3=None, *, static: bool | None = None
-) -> Demo:
+def g2_stitch_demo(V=None, beta1=1.0, beta2=0.0, W3=None, *, static: bool | None = None) -> Demo:
     """Stitch a cubic Bézier curve ``r`` to ``q`` with G2 continuity (seed 000 §8, Fig. 8).
 
     Draggable: ``V_0 .. V_3`` (the curve ``q``) and ``W_3``; ``W_0, W_1, W_2`` follow
@@ -251,12 +277,12 @@ def g2_stitch_demo(
     """
     from ..stitching import g2_stitch
 
-    V = as_points([[0, 0], [1, 1.5], [2.5, 2], [4, 1.6]] if V is None else V, "V",
-                  min_points=4, dims=(2,))
+    V = as_points(
+        [[0, 0], [1, 1.5], [2.5, 2], [4, 1.6]] if V is None else V, "V", min_points=4, dims=(2,)
+    )
     if V.shape[0] != 4:
         raise ValueError(f"V must hold the 4 control points of a cubic; got {V.shape[0]}")
-    W3 = as_points(np.atleast_2d([8.5, 1.0] if W3 is None else W3), "W3", min_points=1,
-                   dims=(2,))
+    W3 = as_points(np.atleast_2d([8.5, 1.0] if W3 is None else W3), "W3", min_points=1, dims=(2,))
     P = np.vstack([V, W3[:1]])
 
     def build(P, params):
@@ -264,9 +290,12 @@ def g2_stitch_demo(
 
     state = CurveDemoState(build, P, {"beta1": float(beta1), "beta2": float(beta2)})
     return _finish(
-        state, static=static, name="G2 stitching",
+        state,
+        static=static,
+        name="G2 stitching",
         sliders=[replace(BETA1, per_joint=False), replace(BETA2, per_joint=False)],
-        design_polygon=False, extras=[_farin_boehm_overlay],  # the diagram labels the points
+        design_polygon=False,
+        extras=[_farin_boehm_overlay],  # the diagram labels the points
         title="G2 stitching (Farin-Boehm)",
     )
 
@@ -310,7 +339,11 @@ def knot_spline_demo(d_points=None, knots=None, *, static: bool | None = None) -
 
     D = as_points(
         [[0, 0], [0.8, 2.2], [2.5, 3], [4.5, 2.6], [5.5, 0.4], [7.5, 0.2], [9, 2.5], [10, 0.5]]
-        if d_points is None else d_points, "d_points", min_points=1, dims=(2,),
+        if d_points is None
+        else d_points,
+        "d_points",
+        min_points=1,
+        dims=(2,),
     )
     L = (D.shape[0] - 2) // 2
     k = np.arange(L + 1, dtype=float) if knots is None else np.asarray(knots, dtype=float)
@@ -320,8 +353,15 @@ def knot_spline_demo(d_points=None, knots=None, *, static: bool | None = None) -
 
     state = CurveDemoState(build, D, {"knots": k})
     labels = [f"$d_{{{i - 1}}}$" for i in range(D.shape[0])]
-    return _finish(state, static=static, name="G1 knot spline", knots=True, design_labels=labels,
-                   extras=[_knot_overlay], title="Finn's G1 Bézier spline")
+    return _finish(
+        state,
+        static=static,
+        name="G1 knot spline",
+        knots=True,
+        design_labels=labels,
+        extras=[_knot_overlay],
+        title="Finn's G1 Bézier spline",
+    )
 
 
 def _knot_overlay(view):

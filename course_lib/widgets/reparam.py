@@ -34,8 +34,9 @@ class ReparametrizationState:
     def __init__(self, points=None, a: float = 0.6, v: float = 0.3, samples: int = 11) -> None:
         from ..curve import PiecewiseBezier
 
-        self.points = as_points(_DEFAULT if points is None else points, "points", min_points=2,
-                                dims=(2,)).copy()
+        self.points = as_points(
+            _DEFAULT if points is None else points, "points", min_points=2, dims=(2,)
+        ).copy()
         self.curve = PiecewiseBezier([self.points])
         self.samples = samples
         self.v = check_finite_scalar(v, "v")
@@ -101,7 +102,7 @@ class ReparametrizationState:
 
     def report_html(self) -> str:
         if self.warning:
-            return (f"<p style='color:#D55E00;font-weight:bold'>⚠ {html.escape(self.warning)}</p>")
+            return f"<p style='color:#D55E00;font-weight:bold'>⚠ {html.escape(self.warning)}</p>"
         F = self.facts
 
         def vec(x):
@@ -135,19 +136,24 @@ class ReparametrizationView:
         with course_style():
             self.ax = self.fig.add_axes((0.04, 0.08, 0.56, 0.84))
             self.fax = self.fig.add_axes((0.70, 0.14, 0.27, 0.74))
-        self.curve_artists = plot_curve(self.ax, state.curve, points=False, joints=False,
-                                        polygon=False)
-        self.design = plot_control_polygon(self.ax, state.points, linestyle="--",
-                                           color="#6E6E6E", markersize=6)
+        self.curve_artists = plot_curve(
+            self.ax, state.curve, points=False, joints=False, polygon=False
+        )
+        self.design = plot_control_polygon(
+            self.ax, state.points, linestyle="--", color="#6E6E6E", markersize=6
+        )
         blue, red = OKABE_ITO["blue"], OKABE_ITO["vermillion"]
         (self.dots_q,) = self.ax.plot([], [], "o", ms=7, color=blue, label="Q(u), u equally spaced")
-        (self.dots_r,) = self.ax.plot([], [], "s", ms=6, mfc="white", mec=red, mew=1.8,
-                                      label="Q∘f(v), v equally spaced")
+        (self.dots_r,) = self.ax.plot(
+            [], [], "s", ms=6, mfc="white", mec=red, mew=1.8, label="Q∘f(v), v equally spaced"
+        )
         kw = dict(angles="xy", scale_units="xy", scale=1.0)
-        self.vel_r = self.ax.quiver([0], [0], [0], [0], color=red, label="d(Q∘f)/dv (× 1/4)",
-                                    width=0.012, zorder=6, **kw)
-        self.vel_q = self.ax.quiver([0], [0], [0], [0], color=blue, label="dQ/du (× 1/4)",
-                                    width=0.005, zorder=7, **kw)
+        self.vel_r = self.ax.quiver(
+            [0], [0], [0], [0], color=red, label="d(Q∘f)/dv (× 1/4)", width=0.012, zorder=6, **kw
+        )
+        self.vel_q = self.ax.quiver(
+            [0], [0], [0], [0], color=blue, label="dQ/du (× 1/4)", width=0.005, zorder=7, **kw
+        )
         (self.point,) = self.ax.plot([], [], "o", color="black", ms=8, zorder=8)
         self.ax.set_title("one curve, two parametrizations", fontsize=13)
         v = np.linspace(0, 1, 101)
@@ -213,13 +219,27 @@ def reparametrization_demo(
 
     from .interactor import PointDragger
 
-    sa = w.FloatSlider(value=state.a, min=-0.9, max=0.9, step=0.01, description="a",
-                       continuous_update=True, style={"description_width": "3em"},
-                       layout=w.Layout(width="22em"))
+    sa = w.FloatSlider(
+        value=state.a,
+        min=-0.9,
+        max=0.9,
+        step=0.01,
+        description="a",
+        continuous_update=True,
+        style={"description_width": "3em"},
+        layout=w.Layout(width="22em"),
+    )
     sa.add_class("cl-slider-shape")
-    sv = w.FloatSlider(value=state.v, min=0.0, max=1.0, step=0.0025, description="v",
-                       continuous_update=True, style={"description_width": "3em"},
-                       layout=w.Layout(width="22em"))
+    sv = w.FloatSlider(
+        value=state.v,
+        min=0.0,
+        max=1.0,
+        step=0.0025,
+        description="v",
+        continuous_update=True,
+        style={"description_width": "3em"},
+        layout=w.Layout(width="22em"),
+    )
     sv.add_class("cl-slider-t")
     demo.controls.update(a=sa, t=sv)
     sa.observe(demo.guard(lambda ch: state.set_a(ch["new"])), names="value")

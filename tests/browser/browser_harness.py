@@ -13,7 +13,8 @@ Everything a test starts is stopped by its fixture, also when the test fails:
 
 Stopping sends SIGTERM to the server (it shuts its kernels down) and then checks that no
 process whose command line or working directory lies in that temporary directory is left
-(the kernels' connection files are in its runtime folder).
+(JupyterLab's kernels have their connection file in its runtime folder; every kernel runs in
+the root folder, where its notebook is).
 
 Without Playwright or Chromium the tests are skipped with the reason (``make test`` installs
 Chromium first with ``tools/ensure-browser``).  Recipe: /work/shared/recipes/
@@ -22,6 +23,7 @@ browser-and-notebook-testing.md.
 
 from __future__ import annotations
 
+import http.client
 import json
 import os
 import secrets
@@ -43,13 +45,12 @@ CHROMIUM_ENV = "COURSE_CHROMIUM"  # optional override of the browser executable
 
 # ----------------------------------------------------------------------------- browser
 def find_chromium() -> str | None:
-    """Path of a Chromium executable: ``$COURSE_CHROMIUM``, /usr/bin/chromium or on PATH."""
-    for cand in (
-        os.environ.get(CHROMIUM_ENV),
-        "/usr/bin/chromium",
-        shutil.which("chromium"),
-        shutil.which("chromium-browser"),
-    ):
+    """Path of a Chromium executable: ``$COURSE_CHROMIUM`` when set (and then only that),
+    else /usr/bin/chromium (Debian) or ``chromium``/``chromium-browser`` on PATH."""
+    override = os.environ.get(CHROMIUM_ENV)
+    cands = (override,) if override else (
+        "/usr/bin/chromium", shutil.which("chromium"), shutil.which("chromium-browser"))
+    for cand in cands:
         if cand and os.path.isfile(cand) and os.access(cand, os.X_OK):
             return cand
     return None
@@ -184,28 +185,52 @@ class Server:
         ]
 
     # -- life cycle
-    def start(self, cmd: list[str], timeout: float = 60.0) -> None:
+    def launch(self, cmd: list[str]) -> None:
+        """Start the server process (does not wait; see ``wait_ready``)."""
         self._log = self.log_path.open("wb")
         self.proc = subprocess.Popen(
             cmd, cwd=self.root, env=self.env(), stdout=self._log, stderr=subprocess.STDOUT,
             stdin=subprocess.DEVNULL, start_new_session=True,
         )
-        probe = "/api/status" if self.kind == "lab" else "/api/kernels"
+
+    def wait_ready(self, timeout: float = 60.0) -> None:
+        """Wait until the server answers; raise with the log's tail if it exits or hangs."""
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
             if self.proc.poll() is not None:
                 raise RuntimeError(f"{self.kind} server exited with {self.proc.returncode}:\n"
                                    f"{self.log_tail()}")
-            req = urllib.request.Request(self.url + probe,
-                                         headers={"Authorization": f"token {self.token}"})
-            try:
-                with urllib.request.urlopen(req, timeout=2) as r:
-                    if r.status == 200:
-                        return
-            except (urllib.error.URLError, ConnectionError, TimeoutError):
-                pass
+            if self._ready():
+                return
             time.sleep(0.2)
         raise RuntimeError(f"{self.kind} server not ready after {timeout} s:\n{self.log_tail()}")
+
+    def _ready(self) -> bool:
+        """JupyterLab: ``GET /api/status`` answers 200 (with the token).  Voilà: the port
+        accepts connections (any page request would start executing the notebook)."""
+        if self.kind != "lab":
+            try:
+                with socket.create_connection(("127.0.0.1", self.port), timeout=1):
+                    return True
+            except OSError:
+                return False
+        req = urllib.request.Request(self.url + "/api/status",
+                                     headers={"Authorization": f"token {self.token}"})
+        try:
+            with urllib.request.urlopen(req, timeout=2) as r:
+                return r.status == 200
+        except (urllib.error.URLError, ConnectionError, TimeoutError):
+            return False
+
+    def status_without_token(self, path: str) -> int:
+        """HTTP status of ``GET path`` without the token, redirects not followed
+        (JupyterLab's API answers 403, Voilà redirects to /login: 302)."""
+        conn = http.client.HTTPConnection("127.0.0.1", self.port, timeout=10)
+        try:
+            conn.request("GET", path)
+            return conn.getresponse().status
+        finally:
+            conn.close()
 
     def stop(self, timeout: float = 15.0) -> None:
         """SIGTERM (the server shuts its kernels down), then wait for everything under ``base``.

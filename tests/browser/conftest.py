@@ -20,8 +20,8 @@ def chromium_path() -> str:
                     "install the test extras: pip install -e '.[test]'")
     path = find_chromium()
     if path is None:
-        pytest.skip("browser test skipped: no Chromium found (/usr/bin/chromium, PATH or "
-                    f"${CHROMIUM_ENV}); install it with `bash tools/ensure-browser` (Debian, root) "
+        pytest.skip(f"browser test skipped: no Chromium found (${CHROMIUM_ENV}, /usr/bin/chromium "
+                    "or PATH); install it with `bash tools/ensure-browser` (Debian, root) "
                     "or `apt-get install chromium`")
     return path
 

@@ -187,7 +187,12 @@ def test_profile_shows_the_curvature_jump_of_a_g1_joint(ax):
 def test_profile_of_a_g2_curve_is_continuous(ax):
     # a C2 split of one cubic (de Casteljau at 1/2 by hand): no jump
     P = np.array([[0, 0], [1, 2], [3, 2], [4, 0]], float)
-    L = [P[0], (P[0] + P[1]) / 2, (P[0] + 2 * P[1] + P[2]) / 4, (P[0] + 3 * P[1] + 3 * P[2] + P[3]) / 8]
+    L = [
+        P[0],
+        (P[0] + P[1]) / 2,
+        (P[0] + 2 * P[1] + P[2]) / 4,
+        (P[0] + 3 * P[1] + 3 * P[2] + P[3]) / 8,
+    ]
     R = [L[3], (P[1] + 2 * P[2] + P[3]) / 4, (P[2] + P[3]) / 2, P[3]]
     segs = plot_curvature_profile(ax, PiecewiseBezier([L, R])).lines.get_segments()
     np.testing.assert_allclose(segs[0][-1], segs[1][0], rtol=1e-7)
@@ -293,23 +298,29 @@ def test_farin_boehm_diagram_and_update(ax):
     # the diagram moves with new points (as in the widget)
     _g2, T2, W2 = farin_boehm_by_hand(V, 0.5, 0.0)
     dg.update({"T": T2, "W1": W2[1], "W2": W2[2]})
-    np.testing.assert_allclose(np.column_stack(dg.artists["line:fan"].get_data()), [T2, W2[1], W2[2]])
+    np.testing.assert_allclose(
+        np.column_stack(dg.artists["line:fan"].get_data()), [T2, W2[1], W2[2]]
+    )
     np.testing.assert_allclose(dg.artists["label:T"].xy, T2)
 
 
 def test_knot_joint_construction_links_are_parallel(ax):
     # Finn's joint rule by hand: p3i = (t_{i+1}-t_i)/(t_{i+1}-t_{i-1}) p3i-1 + (t_i-t_{i-1})/(...) p3i+1
     knots = np.array([0.0, 1.0, 3.0, 4.0])
-    p = [np.array(q, float) for q in
-         [[0, 0], [1, 2], [2, 2.5], None, [4, 1], [5, 0], None, [7, 1.5], [8, 3], [9, 2]]]
+    p = [
+        np.array(q, float)
+        for q in [[0, 0], [1, 2], [2, 2.5], None, [4, 1], [5, 0], None, [7, 1.5], [8, 3], [9, 2]]
+    ]
     for i, (a, b) in ((1, (2, 4)), (2, (5, 7))):
         t0, t1, t2 = knots[i - 1 : i + 2]
         p[3 * i] = (t2 - t1) / (t2 - t0) * p[a] + (t1 - t0) / (t2 - t0) * p[b]
     c = PiecewiseBezier.from_control_points(np.array(p), 3, knots)
     dg = plot_knot_joint_construction(ax, c)
     for i in (1, 2):
-        links = [np.diff(np.column_stack(dg.artists[f"line:link{i}_{m}"].get_data()), axis=0)[0]
-                 for m in range(3)]
+        links = [
+            np.diff(np.column_stack(dg.artists[f"line:link{i}_{m}"].get_data()), axis=0)[0]
+            for m in range(3)
+        ]
         np.testing.assert_allclose(links[0], links[1], atol=1e-12)
         np.testing.assert_allclose(links[0], links[2], atol=1e-12)
     assert dg.artists["label:tp2"].get_text() == "$t_{2}=3$"
@@ -320,8 +331,10 @@ def test_knot_joint_construction_links_are_parallel(ax):
 def test_beta_spline_construction_reads_the_segments(ax):
     Vp = np.array([[0, 0], [1, 2], [3, 2], [4, 0]], float)
     b1 = 2.0
-    segs = [[(b1 * Vp[i - 1] + Vp[i]) / (1 + b1), Vp[i], (b1 * Vp[i] + Vp[i + 1]) / (1 + b1)]
-            for i in (1, 2)]  # seed 000 eq. (18)-(19)
+    segs = [
+        [(b1 * Vp[i - 1] + Vp[i]) / (1 + b1), Vp[i], (b1 * Vp[i] + Vp[i + 1]) / (1 + b1)]
+        for i in (1, 2)
+    ]  # seed 000 eq. (18)-(19)
     dg = plot_beta_spline_construction(ax, PiecewiseBezier(segs), Vp)
     J = np.column_stack(dg.artists["junctions"].get_data())
     np.testing.assert_allclose(J[1], (b1 * Vp[1] + Vp[2]) / (1 + b1))
@@ -365,3 +378,65 @@ def test_plot_functions_return_artists_on_their_axes(ax):
             assert a.axes is ax
     fr = plot_frame(ax, G1_CURVE, 0.5)
     assert isinstance(fr.point, Line2D) and fr.normal is None
+
+
+# ------------------------------------------- with the course's constructions
+def test_beta_spline_blending_functions_partition_of_unity_and_local_support(ax):
+    from course_lib.beta_splines import cubic_beta_spline
+
+    n = 8
+
+    def construct(P):
+        return cubic_beta_spline(P, beta1=1.7, beta2=4.0)
+
+    _t, b = blending_functions(construct, n, per_segment=17)
+    np.testing.assert_allclose(b.sum(axis=0), 1.0, atol=1e-12)  # affine invariance
+    assert np.all(b > -1e-12)  # β1 > 0, β2 >= 0: convex hull property
+    # b_k lives on at most 4 consecutive segments (segment s uses V_s .. V_{s+3})
+    for k in range(n):
+        live = np.flatnonzero(np.any(np.abs(b[k]) > 1e-13, axis=1))
+        assert live.size <= 4 and np.all(np.diff(live) == 1)
+    arts = plot_blending_functions(ax, construct, n, highlight=3)
+    assert arts.support is not None
+
+
+def test_stitching_diagram_from_a_g2_stitched_curve(ax):
+    from course_lib.plotting.constructions import plot_stitching
+    from course_lib.stitching import g2_stitch
+
+    c = g2_stitch(V, 1.3, 2.0, [[9.0, 1.0]])
+    g, T, _W = farin_boehm_by_hand(V, 1.3, 2.0)  # eq. (12) written out above
+    dg = plot_stitching(ax, c)
+    np.testing.assert_allclose(dg.points["T"], T, atol=1e-12)
+    assert dg.artists["ratio:2"].get_text() == f"γ={g:.3g}"
+
+
+def test_patch_pair_normals_along_the_boundary():
+    from course_lib.plotting.surfaces3d import plot_patch_pair
+    from course_lib.surfaces import BezierPatch
+
+    # two bilinear-by-cubic patches forming a flat plane z = 0 (G1 trivially): normals (0,0,1)
+    x = np.linspace(0, 1, 4)
+    F = BezierPatch(np.array([[[a, b, 0.0] for b in x] for a in x]))
+    G = BezierPatch(np.array([[[1 + a, b, 0.0] for b in x] for a in x]))
+    _fig, ax3 = new_figure(pyplot=False, projection="3d")
+    arts = plot_patch_pair(ax3, F, G, n_normals=5, length=0.5)
+    for q in (arts.normals_F, arts.normals_G):
+        segs = np.asarray(q._segments3d)[:5]  # shafts, stored by matplotlib as [tip, base]
+        base = np.column_stack([np.ones(5), np.linspace(0, 1, 5), np.zeros(5)])
+        np.testing.assert_allclose(segs[:, 1], base, atol=1e-12)
+        np.testing.assert_allclose(segs[:, 0] - segs[:, 1], [[0, 0, 0.5]] * 5, atol=1e-12)
+    with pytest.raises(ValueError, match="3D Axes"):
+        _fig2, ax2 = new_figure(pyplot=False)
+        plot_patch_pair(ax2, F, G)
+
+
+def test_profile_with_sparse_arc_lengths_keeps_the_joints_exact():
+    from course_lib.plotting import curvature_profile
+
+    X1, k1 = curvature_profile(G1_CURVE, 16)
+    X3, k3 = curvature_profile(G1_CURVE, 16, arc_length_every=3)
+    np.testing.assert_array_equal(k1, k3)
+    np.testing.assert_allclose(X3[:, [0, 3, 6, 15]], X1[:, [0, 3, 6, 15]], rtol=1e-13)
+    np.testing.assert_allclose(X3, X1, rtol=2e-3)  # linear in between: close, for drawing
+    assert np.all(np.diff(X3, axis=1) > 0)

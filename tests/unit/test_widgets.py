@@ -83,7 +83,7 @@ def test_drag_with_the_mouse():
     k = 5  # W2, free
     start = ax.transData.transform(demo.state.points[k])
     target = np.array([6.0, 1.5])
-    mouse(canvas, "button_press_event", start + [3, -2])  # within the 10 px tolerance
+    mouse(canvas, "button_press_event", start + np.array([3, -2]))  # within the 10 px tolerance
     assert demo.dragger.active == k
     mouse(canvas, "motion_notify_event", ax.transData.transform(target))
     mouse(canvas, "button_release_event", ax.transData.transform(target))
@@ -172,11 +172,10 @@ def test_point_dragger_hit_test_in_pixels():
     demo = curvature_comb_demo(static=True)
     ax = demo.view.ax
     moves = []
-    drag = PointDragger(ax, lambda: demo.state.points, lambda k, x, y: moves.append(k),
-                        tolerance=4)
+    drag = PointDragger(ax, lambda: demo.state.points, lambda k, x, y: moves.append(k), tolerance=4)
     p = ax.transData.transform(demo.state.points[2])
-    assert drag.hit(*(p + [3, 0])) == 2
-    assert drag.hit(*(p + [5, 0])) is None
+    assert drag.hit(*(p + np.array([3, 0]))) == 2
+    assert drag.hit(*(p + np.array([5, 0]))) is None
     drag.disconnect()
 
 
@@ -200,3 +199,170 @@ def test_reparametrization_demo_chain_rule_and_intrinsic_quantities():
 def test_reparametrization_demo_rejects_a_reversing_change():
     with pytest.raises(ValueError):
         reparametrization_demo(a=1.5, static=True)
+
+
+# ---------------------------------------------------- construction demos
+from course_lib.widgets import (  # noqa: E402
+    beta_spline_demo,
+    catmull_rom_demo,
+    g2_stitch_demo,
+    knot_spline_demo,
+)
+
+
+@pytest.fixture(scope="module")
+def beta():
+    return beta_spline_demo(beta1=1.0, beta2=0.0)
+
+
+def test_beta_demo_css_and_slider_ranges(beta):
+    assert CSS | {"cl-slider-beta1", "cl-slider-beta2"} <= classes(beta)
+    s1, s2 = beta.controls["beta1"], beta.controls["beta2"]
+    assert 10.0**s1.min > 0  # log slider: β1 can never reach 0
+    assert s2.min >= 0
+
+
+def test_beta1_slider_reaches_the_curve_and_the_report(beta):
+    from course_lib.beta_splines import cubic_beta_spline
+
+    beta.controls["same"].value = True
+    beta.controls["beta1"].value = 2.0
+    st = beta.state
+    ref = cubic_beta_spline(st.points, beta1=2.0, beta2=0.0)
+    for a, b in zip(st.curve.segments, ref.segments, strict=True):
+        np.testing.assert_allclose(a, b)
+    # the continuity analysis measures β1 = 2 at the joint, independently of the construction
+    assert st.report.g_order >= 2
+    np.testing.assert_allclose(st.report.betas[:2], [2.0, 0.0], atol=1e-9)
+    assert "β1 = 2" in beta.report.value
+
+
+def test_per_joint_beta_with_the_joint_selector(beta):
+    beta.controls["beta1"].value = 1.0
+    beta.controls["same"].value = False
+    beta.controls["joint"].value = 1
+    beta.controls["beta2"].value = 5.0
+    st = beta.state
+    np.testing.assert_allclose(st.report.betas[:2], [1.0, 5.0], atol=1e-8)
+    assert st.params["beta2"][0] == 0.0 and st.params["beta2"][1] == 5.0
+    beta.controls["joint"].value = 0  # the sliders follow the selected joint
+    assert beta.controls["beta2"].value == 0.0
+    np.testing.assert_allclose(st.report.betas[:2], [1.0, 0.0], atol=1e-8)
+    beta.controls["same"].value = True
+
+
+def test_beta_demo_drag_and_degenerate_drag():
+    demo = beta_spline_demo(degree=2, beta1=1.5)
+    P = demo.state.points
+    demo.state.drag(3, P[3, 0] + 0.5, P[3, 1])
+    np.testing.assert_allclose(demo.state.curve.segments[2][1], demo.state.points[3])  # W_i,1 = V_i
+    demo.state.drag(3, *P[4])  # two coincident vertices: the construction refuses
+    assert "construction failed" in demo.state.warning
+    assert demo.warning.layout.display != "none"
+
+
+@pytest.mark.parametrize(
+    ("factory", "kwargs", "match"),
+    [
+        (beta_spline_demo, {"beta1": -0.5}, "beta1"),
+        (beta_spline_demo, {"beta1": 0.0, "degree": 2}, "beta1"),
+        (beta_spline_demo, {"points": [[0, 0], [1, 1], [2, 0]]}, "at least 4"),
+        (beta_spline_demo, {"degree": 4}, "degree"),
+        (catmull_rom_demo, {"beta1": -1.0}, "beta1"),
+        (catmull_rom_demo, {"points": [[0, 0], [1, 1], [2, 0]]}, "at least 4"),
+        (g2_stitch_demo, {"beta1": 0.0}, "beta1"),
+        (g2_stitch_demo, {"V": [[0, 0], [1, 1], [2, 0]]}, "at least 4"),
+        (g2_stitch_demo, {"V": [[0, 0], [1, 1], [2, 0], [3, 1], [4, 0]]}, "4 control points"),
+        (knot_spline_demo, {"knots": [0, 2, 1, 3]}, "strictly increasing"),
+        (knot_spline_demo, {"knots": [0, 1, 2]}, "knots must have"),
+        (reparametrization_demo, {"a": 1.0}, "orientation preserving"),
+    ],
+)
+def test_bad_initial_data_fails_at_construction(factory, kwargs, match):
+    with pytest.raises(ValueError, match=match):
+        factory(static=True, **kwargs)
+
+
+def test_catmull_rom_demo_report_g1_not_c1():
+    demo = catmull_rom_demo(static=True)
+    demo.state.set_param("beta1", 0.5)
+    rep = demo.state.report
+    assert rep.g_order == 1 and rep.c_order == 0
+    np.testing.assert_allclose(rep.betas[0], 0.5, rtol=1e-9)
+
+
+def test_g2_stitch_demo_is_g2_for_every_setting():
+    demo = g2_stitch_demo()
+    assert {"cl-slider-beta1", "cl-slider-beta2"} <= classes(demo)
+    for b1, b2 in ((0.5, 0.0), (2.0, 3.0), (1.2, 10.0)):
+        demo.controls["beta1"].value = b1
+        demo.controls["beta2"].value = b2
+        rep = demo.state.report
+        assert rep.g_order >= 2
+        np.testing.assert_allclose(rep.betas[:2], [b1, b2], rtol=1e-9, atol=1e-9)
+    # T drawn by the diagram: on the extension of V1 V2 (collinear)
+    diagram_T = next(a for a in demo.view.ax.texts if a.get_text() == "$T$").xy
+    V = demo.state.curve.segments[0]
+    a, b = V[2] - V[1], np.asarray(diagram_T) - V[2]
+    assert abs(a[0] * b[1] - a[1] * b[0]) < 1e-9 and a @ b > 0
+    demo.state.drag(2, *demo.state.points[3])  # V2 = V3: no end tangent
+    assert "construction failed" in demo.state.warning
+
+
+def test_knot_demo_slider_keeps_the_knots_in_order():
+    demo = knot_spline_demo()
+    assert "cl-slider-knot" in classes(demo)
+    ks, ksel = demo.controls["knot"], demo.controls["knot_index"]
+    k = demo.state.params["knots"]
+    assert k[0] < ks.min and ks.max < k[2]
+    ks.value = 1.6
+    k = demo.state.params["knots"]
+    np.testing.assert_allclose(k, [0, 1.6, 2, 3])
+    ksel.value = 2
+    assert 1.6 < ks.min and ks.max < 3 and ks.value == 2.0
+    ks.value = 1.0  # below the slider's range: clamped, the order survives
+    assert np.all(np.diff(demo.state.params["knots"]) > 0)
+    # Finn's joint rule, checked on the curve: p_3 divides p_2 p_4 as t_1 divides [t_0, t_2]
+    t = demo.state.params["knots"]
+    s0, s1 = demo.state.curve.segments[:2]
+    lam = np.linalg.norm(s0[3] - s0[2]) / np.linalg.norm(s1[1] - s0[2])
+    np.testing.assert_allclose(lam, (t[1] - t[0]) / (t[2] - t[0]), rtol=1e-12)
+    rep = demo.state.report  # C1 in the global parameter (seed 004 exercise 19.8.3)
+    assert rep.c_order >= 1 and rep.g_order >= 1
+
+
+def test_demos_run_in_a_kernel():
+    """What nbval does: create every demo in a real kernel (headless ipympl) and display it."""
+    import nbformat
+    from nbclient import NotebookClient
+
+    code = (
+        "from course_lib.widgets import *\n"
+        "demos = [catmull_rom_demo(), beta_spline_demo(), beta_spline_demo(degree=2),\n"
+        "         g2_stitch_demo(), knot_spline_demo(), reparametrization_demo(),\n"
+        "         curvature_comb_demo()]\n"
+        "demos[1].controls['beta1'].value = 2.0\n"
+        "print(demos[1].state.report.g_order, type(demos[1].figure.canvas).__name__)\n"
+        "display(*demos)\n"
+    )
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(code)])
+    NotebookClient(nb, timeout=60, kernel_name="python3").execute()
+    outs = nb.cells[0].outputs
+    assert not [o for o in outs if o.output_type == "error"]
+    assert "".join(o.get("text", "") for o in outs if o.output_type == "stream").split() == [
+        "2",
+        "Canvas",
+    ]
+    views = [o for o in outs if "application/vnd.jupyter.widget-view+json" in o.get("data", {})]
+    assert len(views) == 7
+
+
+def test_automatic_static_fallback_without_widgets(monkeypatch):
+    import course_lib.widgets._core as core
+    import course_lib.widgets.demos as demos
+
+    monkeypatch.setattr(core, "_widgets_available", lambda: False)
+    monkeypatch.setattr(demos, "_widgets_available", lambda: False)
+    demo = demos.beta_spline_demo()
+    assert demo.widget is None and type(demo.figure.canvas).__name__ == "FigureCanvasAgg"
+    assert "image/png" in demo._repr_mimebundle_()

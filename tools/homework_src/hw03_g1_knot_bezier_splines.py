@@ -3,8 +3,8 @@
 # ruff: noqa: B018
 
 # %% [markdown]
-# *Geometric continuity of parametric curves* · Homework 3 of 4 · after the lecture on Finn's
-# G1 Bézier splines from control points and a knot sequence (seed 004 §19.5–19.8).
+# *Geometric continuity of parametric curves* · Homework 3 of 4 · after the lecture
+# [03 G1 Bézier splines from knots](../notebooks/03_g1_knot_bezier_splines.ipynb) (seed 004 §19.5–19.8).
 #
 # # Homework 3 — G1 Bézier splines from a knot sequence
 #

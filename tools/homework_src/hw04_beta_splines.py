@@ -3,8 +3,8 @@
 # ruff: noqa: B018
 
 # %% [markdown]
-# *Geometric continuity of parametric curves* · Homework 4 of 4 · after the lectures on stitching
-# Bézier curves with $G^1$/$G^2$ continuity and on Beta-splines (seed 000 §8, §10).
+# *Geometric continuity of parametric curves* · Homework 4 of 4 · after the lecture
+# [04 Beta-splines](../notebooks/04_beta_splines.ipynb) (stitching Bézier curves, Beta-splines; seed 000 §8, §10).
 #
 # # Homework 4 — Stitching Bézier curves and Beta-splines
 #

@@ -1,0 +1,158 @@
+"""The grading command, end to end (tools/grade.py with nbclient kernels).
+
+* the solution notebooks score full marks and the blank exercises score zero, for all four
+  homework sets, against the hidden tests in solutions/hidden_tests/;
+* the faulty submissions of tests/fixtures/submissions/hw01/ (named by what they get wrong)
+  each get exactly the expected points and notes -- an exception, an endless loop (in a cell
+  and in a graded function), a kernel that dies, malformed JSON, deleted variables, answers of
+  the wrong type -- and none of them stops the batch;
+* nothing is modified: every submitted file is byte-identical afterwards (sha256);
+* a hang never blocks the batch: the endless loop costs one short cell timeout.
+"""
+
+from __future__ import annotations
+
+import csv
+import hashlib
+import importlib.util
+import sys
+import time
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+FIXTURES = ROOT / "tests" / "fixtures" / "submissions" / "hw01"
+HIDDEN = ROOT / "solutions" / "hidden_tests"
+
+spec = importlib.util.spec_from_file_location("grade", ROOT / "tools" / "grade.py")
+grade = importlib.util.module_from_spec(spec)
+sys.modules["grade"] = grade
+spec.loader.exec_module(grade)
+
+pytestmark = [pytest.mark.slow, pytest.mark.timeout(180)]
+
+
+def _hashes(paths) -> dict[Path, str]:
+    return {p: hashlib.sha256(p.read_bytes()).hexdigest() for p in paths}
+
+
+# name -> (total of 13, per-question note fragments, run-note fragments, status)
+EXPECTED = {
+    "correct": (13, {}, [], "ok"),
+    "fails_q1_q4": (9, {"q1": "T(1) is wrong", "q4": "κ(1) is wrong"}, [], "ok"),
+    "raises": (10, {"q2": "ValueError: boom"}, ["code cell 1 raised ZeroDivisionError"], "ok"),
+    "endless_loop": (
+        10,
+        {"q2": "did not finish within 2 s"},
+        ["code cell 3 was skipped: it ran longer than 5 s"],
+        "partly skipped",
+    ),
+    "kernel_dies": (13, {}, ["code cell 2 was skipped: the kernel died"], "partly skipped"),
+    "malformed": (0, {"q1": "not a valid notebook"}, ["not a valid notebook"], "invalid notebook"),
+    "deleted_variables": (
+        8,
+        {"q1": "`answer_q1` is not defined", "q2": "`chain_rule_derivatives` is not defined"},
+        [],
+        "ok",
+    ),
+    "wrong_types": (
+        3,
+        {"q1": "shape", "q2": "shape", "q3": "string", "q5": "ValueError", "q7": "wrong"},
+        [],
+        "ok",
+    ),
+}
+
+
+@pytest.fixture(scope="module")
+def fixture_run(tmp_path_factory):
+    files = sorted(FIXTURES.glob("*.ipynb"))
+    before = _hashes(files)
+    out = tmp_path_factory.mktemp("grades")
+    start = time.monotonic()
+    code = grade.main(
+        [
+            "--tests", str(HIDDEN / "hw01.py"),
+            "--submissions", str(FIXTURES),
+            "--out", str(out),
+            "--cell-timeout", "5",
+            "--question-timeout", "2",
+            "--time-limit", "40",
+            "--jobs", "4",
+        ]
+    )  # fmt: skip
+    return {"code": code, "out": out, "before": before, "after": _hashes(files),
+            "seconds": time.monotonic() - start}  # fmt: skip
+
+
+def test_fixture_set_is_complete():
+    assert sorted(p.stem for p in FIXTURES.glob("*.ipynb")) == sorted(EXPECTED)
+
+
+def test_batch_runs_and_leaves_submissions_untouched(fixture_run):
+    assert fixture_run["code"] == 0
+    assert fixture_run["before"] == fixture_run["after"]
+    assert fixture_run["seconds"] < 60
+
+
+def _rows(out: Path) -> dict[str, dict[str, str]]:
+    with open(out / "scores.csv", newline="", encoding="utf-8") as fh:
+        return {r["student"]: r for r in csv.DictReader(fh)}
+
+
+@pytest.mark.parametrize("name", sorted(EXPECTED))
+def test_each_faulty_submission_gets_its_points_and_notes(fixture_run, name):
+    total, notes, run_notes, status = EXPECTED[name]
+    row = _rows(fixture_run["out"])[name]
+    assert float(row["total"]) == total
+    assert row["status"] == status
+    feedback = (fixture_run["out"] / "feedback" / f"{name}.md").read_text(encoding="utf-8")
+    assert f"**Score: {total:g} / 13**" in feedback
+    for q, fragment in notes.items():
+        line = next(x for x in feedback.splitlines() if x.startswith(f"| {q} |"))
+        assert fragment in line, f"{name} {q}: {line}"
+        assert float(row[q]) == 0
+    for fragment in run_notes:
+        assert fragment in feedback, f"{name}: no run note {fragment!r}"
+    if total == 13:
+        assert all(float(row[q]) == grade.HiddenTests.load(HIDDEN / "hw01.py").points[q] for q in notes)
+
+
+def test_score_table_layout(fixture_run):
+    with open(fixture_run["out"] / "scores.csv", newline="", encoding="utf-8") as fh:
+        rows = list(csv.reader(fh))
+    assert rows[0] == ["student", "q1", "q2", "q3", "q4", "q5", "q6", "q7", "total", "status"]
+    assert rows[1][0] == "(max)" and float(rows[1][-2]) == 13
+
+
+HOMEWORK_FILES = {
+    "hw01": "hw01_reparametrization.ipynb",
+    "hw02": "hw02_beta_constraints.ipynb",
+    "hw03": "hw03_g1_knot_bezier_splines.ipynb",
+    "hw04": "hw04_beta_splines.ipynb",
+}
+
+
+def test_solutions_full_marks_blank_exercises_zero():
+    jobs = []
+    for hw, name in HOMEWORK_FILES.items():
+        tests = grade.HiddenTests.load(HIDDEN / f"{hw}.py")
+        jobs += [(ROOT / "solutions" / name, tests, "solution"), (ROOT / "exercises" / name, tests, "blank")]
+    before = _hashes(p for p, _, _ in jobs)
+
+    def run(job):
+        path, tests, kind = job
+        return kind, tests, grade.grade_notebook(path, tests, kind, cell_timeout=60, time_limit=120)
+
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        results = list(pool.map(run, jobs))
+    for kind, tests, r in results:
+        assert r.status == "ok", (tests.homework, kind, r.run_notes)
+        if kind == "solution":
+            assert r.total == tests.max_points, (tests.homework, r.notes)
+        else:
+            assert r.total == 0, (tests.homework, r.points)
+            assert all("not answered" in n for n in r.notes.values() if "NotImplemented" in n or "..." in n)
+    assert _hashes(p for p, _, _ in jobs) == before
