@@ -79,7 +79,7 @@ def run(sizes: Sizes, in_process: bool = False) -> list[Result]:
         return [Result("3", "Beta-constraints", note=f"TODO: module missing ({exc})")]
     if not hasattr(bc, "beta_constraints"):
         return [Result("3", "Beta-constraints", note="TODO: no beta_constraints(n) function")]
-    orders, repeats = sizes.beta_orders, max(3, sizes.repeats_slow)
+    orders, repeats = sizes.beta_orders, sizes.repeats_slow
     if in_process:
         data = measure(orders, repeats)
     else:

@@ -152,9 +152,8 @@ def measure(
         c = cubic_beta_spline(P, beta1=b, beta2=0.0)
         segment_samples(c, view.curve_artists.per_segment)
         comb_teeth(c, n_comb, 1.0)
-        dg.unit_tangent(c, [st.t])
-        dg.curvature_vector(c, [st.t])
-        curvature_profile(c, n_prof)
+        dg.arc_length_derivatives(c, [st.t], 2)  # T and dT/ds at the moving point
+        curvature_profile(c, n_prof, arc_length_every=view.profile.arc_length_every)
 
     math_t = _median(math_only, values)
     report_t = _median(lambda b: joint_report(st.curve, st.joint), values)

@@ -156,3 +156,21 @@ def test_solutions_full_marks_blank_exercises_zero():
             assert r.total == 0, (tests.homework, r.points)
             assert all("not answered" in n for n in r.notes.values() if "NotImplemented" in n or "..." in n)
     assert _hashes(p for p, _, _ in jobs) == before
+
+
+def test_overall_time_limit_stops_a_slow_submission(tmp_path):
+    """A notebook whose cells each take a while is cut off at the wall limit, with a note."""
+    import nbformat
+
+    nb = nbformat.v4.new_notebook(
+        cells=[nbformat.v4.new_code_cell("import time\ntime.sleep(1.5)") for _ in range(6)]
+        + [nbformat.v4.new_code_cell("answer_q3 = 'd'")]
+    )
+    path = tmp_path / "slow.ipynb"
+    nbformat.write(nb, path)
+    tests = grade.HiddenTests.load(HIDDEN / "hw01.py")
+    start = time.monotonic()
+    r = grade.grade_notebook(path, tests, "slow", cell_timeout=10, time_limit=4, question_timeout=2)
+    assert time.monotonic() - start < 15
+    assert r.status == "time limit" and r.total == 0
+    assert any("overall time limit of 4 s" in n for n in r.run_notes), r.run_notes

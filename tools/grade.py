@@ -3,7 +3,7 @@
 Usage (instructors)::
 
     python tools/grade.py --tests solutions/hidden_tests/hw01.py \\
-        --submissions submissions/hw01 --out grades/hw01
+        --submissions submissions/hw01 --out grades/hw01 [--jobs 2]
 
 writes ``grades/hw01/scores.csv`` (one row per student: points per question, total) and
 ``grades/hw01/feedback/<student>.md`` (points, the reason for each lost point, notes on the
@@ -71,7 +71,7 @@ MAX_ATTEMPTS = 6
 # call, printing a JSON line tagged with a per-run random marker.
 _SETUP = r'''
 def __cl_grader_setup(source, marker, limit):
-    import json, signal, types
+    import json, signal, sys, types
 
     class _Timeout(BaseException):
         pass
@@ -129,10 +129,14 @@ def __cl_grader_setup(source, marker, limit):
             signal.setitimer(signal.ITIMER_REAL, 0)
             signal.signal(signal.SIGALRM, old)
         fraction = min(max(fraction, 0.0), 1.0) if fraction == fraction else 0.0
-        print(marker + json.dumps({"q": qid, "fraction": fraction, "note": note[:500]}))
+        sys.stdout.write(marker + json.dumps({"q": qid, "fraction": fraction, "note": note[:500]}) + "\n")
 
     return run
 '''
+
+
+class _WallLimit(Exception):
+    """The overall time limit of a submission was reached between two cells."""
 
 
 @dataclass
@@ -267,6 +271,8 @@ def grade_notebook(
 
     def on_cell_start(cell, cell_index) -> None:
         state["index"] = cell_index
+        if remaining() <= 0:
+            raise _WallLimit
 
     with tempfile.TemporaryDirectory(prefix="grade-") as tmp:
         shutil.copyfile(path, Path(tmp) / "submission.ipynb")  # the kernel's working copy
@@ -290,6 +296,15 @@ def grade_notebook(
             )
             try:
                 client.execute()
+                break
+            except _WallLimit:
+                result.status = "time limit"
+                k = state["index"]
+                where = f"before code cell {k + 1}" if k < n_student else "while running the tests"
+                result.run_notes.append(
+                    f"the overall time limit of {time_limit:g} s was reached {where}; "
+                    "what came after was not run"
+                )
                 break
             except (CellTimeoutError, DeadKernelError, RuntimeError) as exc:
                 k = state["index"]

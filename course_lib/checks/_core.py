@@ -419,8 +419,10 @@ def as_sympy_expression(answer: object, name: str, allowed: dict[str, object]) -
         expr = sp.sympify(answer, strict=True)
     except (sp.SympifyError, TypeError, ValueError):
         raise AnswerProblem(f"{name} must be a sympy expression, but it is {_describe(answer)}.") from None
-    if not isinstance(expr, sp.Expr):
-        raise AnswerProblem(f"{name} must be a sympy expression, but it is a {type(expr).__name__}.")
+    if not isinstance(expr, sp.Expr) or getattr(expr, "is_Matrix", False):
+        raise AnswerProblem(
+            f"{name} must be a single sympy expression, but it is a {type(expr).__name__}."
+        )
     if expr.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
         raise AnswerProblem(f"{name} contains nan or infinity -- a division by zero?")
     stray = sorted(str(s) for s in expr.free_symbols if str(s) not in allowed)

@@ -99,7 +99,7 @@ def assemble_curve_demo(
         s.observe(demo.guard(on_value), names="value")
         rows.append(s)
 
-    if knots:
+    if knots and st.curve.n_segments >= 2:  # interior knots exist
         L = st.curve.n_segments
         ksel = w.Dropdown(
             options=[(f"t{i}", i) for i in range(1, L)],

@@ -337,9 +337,10 @@ class CurveDemoView:
     extras : sequence of callables ``(view) -> updater``
         Extra drawings (construction diagrams); each returns a function
         ``(state) -> None`` called on every redraw.
-    profile_samples : int
-        Samples per segment of the κ(s) plot (its arc lengths are the costliest data
-        of a frame; 16 per segment draw a cubic's curvature smoothly at this size).
+    profile_samples : int, optional
+        Samples per segment of the κ(s) plot.  Default 16 on a blitted (interactive)
+        canvas, where its arc lengths are the costliest data of a frame, and 48 on a
+        static figure.
     blit : bool, optional
         Redraw by blitting over a cached background (default: on for the interactive
         canvas, off for a static figure, whose ``savefig`` must show every artist).
@@ -356,7 +357,7 @@ class CurveDemoView:
         figsize: tuple[float, float] = (10.0, 4.6),
         title: str | None = None,
         blit: bool | None = None,
-        profile_samples: int = 16,
+        profile_samples: int | None = None,
     ) -> None:
         from ..plotting import (
             plot_control_polygon,
@@ -381,9 +382,13 @@ class CurveDemoView:
         )
         self.frame = plot_frame(self.ax, c, state.t, labels=False)
         self.circle = plot_osculating_circle(self.ax, c, state.t)
+        live = (not static) if blit is None else bool(blit)  # redrawn many times a second
+        if profile_samples is None:
+            profile_samples = 16 if live else 48
         self.profile = plot_curvature_profile(
-            self.kax, c, per_segment=profile_samples, arc_length_every=3
+            self.kax, c, per_segment=profile_samples, arc_length_every=3 if live else 1
         )
+        self.kax.set_xlim(0.0, 1.06 * self.kax.get_xlim()[1])  # room for the end dots
         (self.profile_point,) = self.kax.plot([], [], "o", color="black", ms=7, zorder=6)
         (self.selected,) = self.ax.plot(
             [],
@@ -404,7 +409,7 @@ class CurveDemoView:
         # Blitting (interactive canvases only; a static figure must keep every artist for
         # savefig): everything drawn on the two Axes is "animated", the rest (frames,
         # ticks, labels) is a cached background restored before the artists are redrawn.
-        self.blit = (not static) if blit is None else bool(blit)
+        self.blit = live
         self.background = None
         self._full = True
         self._flags = None

@@ -57,17 +57,18 @@ def find_chromium() -> str | None:
 
 
 class PageLog:
-    """Console errors, uncaught page errors and aborted outside requests of one page."""
+    """Console errors, uncaught page errors, HTTP errors and aborted outside requests of a page."""
 
     def __init__(self) -> None:
         self.console_errors: list[str] = []
         self.page_errors: list[str] = []
         self.blocked: list[str] = []
+        self.http_errors: list[str] = []
 
     def problems(self, ignore: tuple[str, ...] = ()) -> list[str]:
         msgs = [f"console: {m}" for m in self.console_errors] + [
             f"pageerror: {m}" for m in self.page_errors
-        ]
+        ] + [f"http: {m}" for m in self.http_errors]
         return [m for m in msgs if not any(s in m for s in ignore)]
 
 
@@ -89,6 +90,7 @@ def new_page(browser, *, width: int = 1400, height: int = 1000):
     page.route("**/*", local_only)
     page.on("console", lambda m: m.type == "error" and log.console_errors.append(m.text))
     page.on("pageerror", lambda e: log.page_errors.append(str(e)))
+    page.on("response", lambda r: r.status >= 400 and log.http_errors.append(f"{r.status} {r.url}"))
     return context, page, log
 
 
@@ -171,6 +173,11 @@ class Server:
             "--LabApp.news_url=None",
             "--LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate",
             "--LabApp.expose_app_in_browser=True",  # window.jupyterapp: kernel probe, model
+            "--LabApp.extension_manager=readonly",  # never asks PyPI
+            # server extensions the test does not use: less to import on a busy machine
+            # (not jupyter_lsp: without it the page's GET /lsp/status is a 404 error)
+            *(f"--ServerApp.jpserver_extensions={ext}=False" for ext in (
+                "jupyter_server_terminals", "voila.server_extension", "notebook_shim")),
         ]
         if os.geteuid() == 0:
             cmd.append("--allow-root")

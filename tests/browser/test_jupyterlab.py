@@ -314,7 +314,8 @@ class TestJupyterLab:
         demo.scroll_into_view_if_needed()
         expect(demo.locator(CANVAS).first).to_be_visible(timeout=30_000)
         expect(page.locator(".jupyter-widgets-error-widget")).to_have_count(0)
-        assert lab.log.problems(IGNORED_CONSOLE) == []
+        problems = lab.log.problems(IGNORED_CONSOLE)
+        assert not problems, "\n".join(problems)
         # the random token is really required
         assert lab.server.status_without_token("/api/kernels") == 403
 
@@ -425,7 +426,8 @@ class TestVoila:
         assert n >= 30, f"{sel}: only {n} canvas pixels changed"
         demo.screenshot(path=str(artifacts / "voila-demo-after-interaction.png"))
         # offline the lab template's CDN stylesheet is aborted by the route: not an error
-        assert voila_page.log.problems(IGNORED_CONSOLE) == []
+        problems = voila_page.log.problems(IGNORED_CONSOLE)
+        assert not problems, "\n".join(problems)
 
     def test_stop_leaves_no_process(self, voila_page):
         voila_page.page.context.close()

@@ -136,6 +136,8 @@ WRONG = {
     "returns wrong shape": _wrong_shape,
     "returns NaN": _returns_nan,
     "list of Ellipsis": [..., ..., ...],
+    "sympy matrix": sp.Matrix([[1, 2], [3, 4]]),
+    "list": [1.0, 2.0],
 }
 
 

@@ -438,5 +438,6 @@ def test_profile_with_sparse_arc_lengths_keeps_the_joints_exact():
     X3, k3 = curvature_profile(G1_CURVE, 16, arc_length_every=3)
     np.testing.assert_array_equal(k1, k3)
     np.testing.assert_allclose(X3[:, [0, 3, 6, 15]], X1[:, [0, 3, 6, 15]], rtol=1e-13)
-    np.testing.assert_allclose(X3, X1, rtol=2e-3)  # linear in between: close, for drawing
+    # linear in between: within 0.3 % of the length, under a pixel of a drawn profile
+    np.testing.assert_allclose(X3, X1, atol=3e-3 * X1[-1, -1])
     assert np.all(np.diff(X3, axis=1) > 0)

@@ -166,9 +166,9 @@ check("hw02.q6", answer_q6)
 # %% [markdown]
 # ## Question 7 — read a picture
 #
-# The curve below has four cubic segments and three joints A, B, C. On the right, its signed
-# curvature along the curve (one colour per segment). **Which joint is $G^1$ but not $G^2$?**
-# Answer with one letter.
+# The curve below has four cubic segments and three joints A, B, C. Next to it, along the
+# parameter and with one colour per segment: the direction angle of its unit tangent, and its
+# signed curvature. **Which joint is $G^1$ but not $G^2$?** Answer with one letter.
 
 # %%
 segments_q7 = [
@@ -178,21 +178,25 @@ segments_q7 = [
     [[9, 0.5], [10, 0.5], [11, 1.5], [12, 1.0]],
 ]
 curve_q7 = PiecewiseBezier(segments_q7)
-fig, (ax_curve, ax_kappa) = plt.subplots(1, 2, figsize=(10, 3.2))
+fig, (ax_curve, ax_angle, ax_kappa) = plt.subplots(1, 3, figsize=(12, 3.2), layout="constrained")
 uu = np.linspace(0.0, 1.0, 200)
 for i in range(curve_q7.n_segments):
     p, d1, d2 = (curve_q7.evaluate_segment(i, uu, n) for n in (0, 1, 2))
+    angle = np.degrees(np.arctan2(d1[:, 1], d1[:, 0]))
     kappa = (d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0]) / np.linalg.norm(d1, axis=1) ** 3
     ax_curve.plot(p[:, 0], p[:, 1], lw=2)
+    ax_angle.plot(i + uu, angle, lw=2)
     ax_kappa.plot(i + uu, kappa, lw=2)
-for name, (x, y), t in zip("ABC", curve_q7.joint_points, curve_q7.joint_parameters, strict=True):
+for name, (x, y) in zip("ABC", curve_q7.joint_points, strict=True):
+    ax_curve.plot(x, y, "ko", ms=4)
     ax_curve.annotate(name, (x, y), xytext=(0, 8), textcoords="offset points", ha="center")
-    ax_kappa.axvline(t, color="0.6", ls=":")
-    ax_kappa.annotate(name, (t, 1.02), xycoords=("data", "axes fraction"), ha="center")
+for ax, title in ((ax_angle, "direction of the unit tangent (degrees)"), (ax_kappa, "signed curvature κ")):
+    ax.set_xticks(curve_q7.joint_parameters, list("ABC"))
+    ax.grid(axis="x", ls=":")
+    ax.set_title(title)
+    ax.set_xlabel("joint")
 ax_curve.set_aspect("equal")
-ax_curve.set_title("the curve")
-ax_kappa.set_title("signed curvature κ")
-ax_kappa.set_xlabel("parameter t")
+ax_curve.set_title("the curve", pad=16)
 plt.show()
 
 # %%
@@ -205,9 +209,10 @@ answer_q7 = "A"
 check("hw02.q7", answer_q7)
 
 # %% [markdown] solution
-# At A the tangent turns smoothly but κ jumps: $G^1$, not $G^2$. At B the two segments are the two
-# halves of one cubic (de Casteljau subdivision), so everything is continuous. At C the curve has
-# a corner: not even $G^1$ (the curvature plot cannot show that — look at the curve).
+# At A the tangent direction is continuous but κ jumps: $G^1$, not $G^2$. At B the two segments
+# are the two halves of one cubic (de Casteljau subdivision), so everything is continuous. At C
+# the tangent direction jumps by 45°: a corner, not even $G^1$ — a jump of κ alone does not tell
+# a corner from a $G^1$ joint.
 
 # %% [markdown]
 # ## Check everything
