@@ -1,6 +1,7 @@
 # The course's commands.  On a fresh machine (Python 3.10+):
 #   make lab    create .venv, install the course, open JupyterLab on notebooks/
 #   make test   create .venv, install the course, run the whole test suite
+#   make bench  print the benchmark table;  make grade  grade a folder of homework (see README)
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
@@ -10,7 +11,6 @@ STAMP  := $(VENV)/.installed
 
 $(STAMP): pyproject.toml constraints.txt
 	$(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet -c constraints.txt -e ".[test]"
 	touch $@
 
@@ -29,6 +29,14 @@ lint: install
 
 bench: install
 	$(BIN)/python benchmarks/run.py
+
+# make grade HW=hw01 SUBMISSIONS=path/to/submitted/notebooks OUT=grades/hw01
+HW ?= hw01
+OUT ?= grading-output/$(HW)
+grade: install
+	@test -n "$(SUBMISSIONS)" || (echo "usage: make grade HW=hw01 SUBMISSIONS=DIR [OUT=DIR]"; exit 2)
+	$(BIN)/python tools/grade.py --tests solutions/hidden_tests/$(HW).py \
+	    --submissions $(SUBMISSIONS) --out $(OUT) --jobs 2
 
 clean:
 	rm -rf $(VENV) test-artifacts

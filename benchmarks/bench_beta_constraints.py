@@ -19,6 +19,7 @@ import subprocess
 import sys
 import time
 
+import bench_common
 from bench_common import BENCH_DIR, REPO, Result, Sizes
 
 GOAL_SECONDS_N8 = 1.0
@@ -46,9 +47,11 @@ def _bell_matrix(n: int):
     return M
 
 
-def measure(orders: tuple[int, ...], repeats: int) -> dict:
+def measure(orders: tuple[int, ...], repeats: int, cpu: bool = False) -> dict:
     """Cold times (s) of beta_constraints(n) and of the Bell-polynomial reference."""
     import sympy as sp
+
+    clock = time.process_time if cpu else time.perf_counter
 
     from course_lib import beta_constraints as bc
 
@@ -58,13 +61,13 @@ def measure(orders: tuple[int, ...], repeats: int) -> dict:
     for _ in range(repeats):
         for n in orders:
             _clear_caches()
-            t0 = time.perf_counter()
+            t0 = clock()
             result = bc.beta_constraints(n)
-            ours[n].append(time.perf_counter() - t0)
+            ours[n].append(clock() - t0)
             _clear_caches()
-            t0 = time.perf_counter()
+            t0 = clock()
             M = _bell_matrix(n)
-            ref[n].append(time.perf_counter() - t0)
+            ref[n].append(clock() - t0)
             if n not in agree:
                 agree[n] = (sp.expand(result.coefficients - M) == sp.zeros(n, n))
     med = {n: sorted(v)[len(v) // 2] for n, v in ours.items()}
@@ -80,13 +83,14 @@ def run(sizes: Sizes, in_process: bool = False) -> list[Result]:
     if not hasattr(bc, "beta_constraints"):
         return [Result("3", "Beta-constraints", note="TODO: no beta_constraints(n) function")]
     orders, repeats = sizes.beta_orders, sizes.repeats_slow
+    cpu = bench_common.CLOCK is time.process_time
     if in_process:
-        data = measure(orders, repeats)
+        data = measure(orders, repeats, cpu)
     else:
         code = (
             f"import sys, json; sys.path.insert(0, {str(BENCH_DIR)!r}); "
             "import sympy, bench_beta_constraints as b; "
-            f"d = b.measure({tuple(orders)!r}, {repeats}); "
+            f"d = b.measure({tuple(orders)!r}, {repeats}, {cpu}); "
             "print(json.dumps({k: {str(n): v for n, v in d[k].items()} for k in d}))"
         )
         proc = subprocess.run(

@@ -100,3 +100,14 @@ def test_report_renders(bench):
     text = run.report(rows, {"CPUs (nproc)": "2"}, common.TINY, 1.0)
     assert "| 1 | a | 2 ms | ref: 4 ms | 0.5 | ≤ 1.5 | yes |" in text
     assert "TODO \\| pipe" in text and "Goals missed: none." in text
+    assert "process CPU time" in run.report(rows, {}, common.TINY, 1.0, cpu=True)
+
+
+def test_cpu_clock_switch(bench):
+    common = bench["common"]
+    try:
+        common.use_cpu_clock(True)
+        assert common.median_time(lambda: sum(range(1000)), 3) > 0
+    finally:
+        common.use_cpu_clock(False)
+    assert common.CLOCK is __import__("time").perf_counter

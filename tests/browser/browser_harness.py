@@ -229,6 +229,18 @@ class Server:
         except (urllib.error.URLError, ConnectionError, TimeoutError):
             return False
 
+    def start_kernel_for(self, notebook: str) -> None:
+        """Create the notebook's session (and kernel) through the REST API, so the kernel
+        starts while the browser loads JupyterLab, which then attaches to it."""
+        body = json.dumps({"path": notebook, "name": notebook, "type": "notebook",
+                           "kernel": {"name": "python3"}}).encode()
+        req = urllib.request.Request(
+            self.url + "/api/sessions", data=body, method="POST",
+            headers={"Authorization": f"token {self.token}",
+                     "Content-Type": "application/json"})
+        with urllib.request.urlopen(req, timeout=60) as r:
+            assert r.status == 201, r.status
+
     def status_without_token(self, path: str) -> int:
         """HTTP status of ``GET path`` without the token, redirects not followed
         (JupyterLab's API answers 403, Voilà redirects to /login: 302)."""

@@ -272,6 +272,9 @@ def lab(request, chromium_path, voila_server, tmp_path_factory):
         browser = request.getfixturevalue("chromium_browser")  # starts while the server does
         server.wait_ready()
         timings["server start"] = time.monotonic() - t0
+        t = time.monotonic()
+        server.start_kernel_for(NOTEBOOK.name)  # boots while the page loads
+        timings["session created"] = time.monotonic() - t
         context, page, log = new_page(browser)
         t = time.monotonic()
         page.goto(f"{server.url}/lab/tree/{NOTEBOOK.name}?reset&token={server.token}")

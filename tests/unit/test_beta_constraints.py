@@ -8,7 +8,6 @@ reduction to C^n for β = (1, 0, ..., 0).
 
 from __future__ import annotations
 
-import time
 
 import numpy as np
 import pytest
@@ -88,12 +87,12 @@ def test_chain_rule_against_taylor_composition():
         assert (taylor - bc.rhs[i - 1]).expand() == 0
 
 
-def test_order_8_is_fast_and_cached():
+def test_order_8_derives_and_is_cached():
+    # Its speed (goal: under 1 s cold) is measured by benchmarks/run.py, not asserted here:
+    # the test suite holds no timed assertions (shared, noisy machine).
     beta_constraints.cache_clear()
-    _raw_derivative.cache_clear()  # measure the cold derivation (sympy itself already imported)
-    start = time.perf_counter()
+    _raw_derivative.cache_clear()
     bc = beta_constraints(8)
-    assert time.perf_counter() - start < 1.0
     assert beta_constraints(8) is bc
     # lower triangular, diagonal β1^i, first column β_i (B_{i,i} = x1^i, B_{i,1} = x_i)
     for i in range(8):
