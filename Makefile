@@ -21,11 +21,11 @@ lab: install
 
 test: install
 	@bash tools/ensure-browser || true
-	$(BIN)/ruff check course_lib tests benchmarks tools
+	$(BIN)/ruff check course_lib tests benchmarks tools conftest.py solutions/hidden_tests
 	$(BIN)/python -m pytest
 
 lint: install
-	$(BIN)/ruff check course_lib tests benchmarks tools
+	$(BIN)/ruff check course_lib tests benchmarks tools conftest.py solutions/hidden_tests
 
 bench: install
 	$(BIN)/python benchmarks/run.py

@@ -107,6 +107,8 @@ def run(sizes: Sizes, skip: bool = False, workers: int | None = None) -> list[Re
     results = []
     for nb, seconds in sorted(per_nb.items()):
         note = f"{failed[nb]} cell(s) FAILED" if failed[nb] else "all cells pass"
+        if len(groups) > 1:
+            note += f"; ran beside another notebook ({len(groups)} pytest processes)"
         results.append(
             Result(
                 "6", f"nbval `{nb}`", seconds, "empty notebook" if kernel else "", kernel,

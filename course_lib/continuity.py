@@ -50,6 +50,16 @@ __all__ = ["CHARACTERIZATIONS", "JointReport", "curve_continuity", "joint_contin
 CHARACTERIZATIONS = ("reparametrization", "beta_constraints", "arc_length")
 
 
+#: Values smaller than this are shown as 0 in reports: they are rounding noise of the
+#: floating-point evaluation (about 1e-15 relative), not a property of the joint.
+DISPLAY_ZERO = 1e-10
+
+
+def _num(x: float, spec: str) -> str:
+    """Format ``x`` for a report, printing rounding noise (|x| < DISPLAY_ZERO) as 0."""
+    return "0" if abs(x) < DISPLAY_ZERO else format(x, spec)
+
+
 @dataclass(frozen=True)
 class JointReport:
     """How smoothly two parametrizations meet at one joint.
@@ -104,17 +114,17 @@ class JointReport:
 
     def _lines(self) -> list[str]:
         where = "Joint" if self.index is None else f"Joint {self.index}"
-        pt = ", ".join(f"{x:.6g}" for x in self.point)
+        pt = ", ".join(_num(x, ".6g") for x in self.point)
         lines = [
             f"{where} at ({pt}): {self._order_text('G', self.g_order, self.max_order)}, "
             f"{self._order_text('C', self.c_order, self.max_order)}"
             f"  [orders checked up to {self.max_order}]",
-            f"  gap {self.gap:.3g}, tangent angle {self.tangent_angle:.4g}°, "
-            f"curvature jump {self.curvature_jump:.3g}",
+            f"  gap {_num(self.gap, '.3g')}, tangent angle {_num(self.tangent_angle, '.4g')}°, "
+            f"curvature jump {_num(self.curvature_jump, '.3g')}",
         ]
         if self.betas:
-            b = ", ".join(f"β{i + 1} = {v:.6g}" for i, v in enumerate(self.betas))
-            r = ", ".join(f"{v:.2g}" for v in self.residuals)
+            b = ", ".join(f"β{i + 1} = {_num(v, '.6g')}" for i, v in enumerate(self.betas))
+            r = ", ".join(_num(v, ".2g") for v in self.residuals)
             lines.append(f"  shape parameters {b}; residuals {r}")
         by = " / ".join(str(self.g_order_by[k]) for k in CHARACTERIZATIONS)
         lines.append(f"  G-order by reparametrization / Beta-constraints / arc length: {by}")
@@ -127,18 +137,18 @@ class JointReport:
         rows = [
             ("geometric continuity", self._order_text("G", self.g_order, self.max_order)),
             ("parametric continuity", self._order_text("C", self.c_order, self.max_order)),
-            ("gap", f"{self.gap:.3g}"),
-            ("tangent angle", f"{self.tangent_angle:.4g}°"),
-            ("curvature jump", f"{self.curvature_jump:.3g}"),
+            ("gap", _num(self.gap, ".3g")),
+            ("tangent angle", f"{_num(self.tangent_angle, '.4g')}°"),
+            ("curvature jump", _num(self.curvature_jump, ".3g")),
         ]
         if self.betas:
             rows.append(
                 (
                     "shape parameters",
-                    ", ".join(f"β{i + 1} = {v:.4g}" for i, v in enumerate(self.betas)),
+                    ", ".join(f"β{i + 1} = {_num(v, '.4g')}" for i, v in enumerate(self.betas)),
                 )
             )
-            rows.append(("Beta residuals", ", ".join(f"{v:.2g}" for v in self.residuals)))
+            rows.append(("Beta residuals", ", ".join(_num(v, ".2g") for v in self.residuals)))
         rows.append(
             (
                 "G-order: reparametrization / Beta / arc length",

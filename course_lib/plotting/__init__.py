@@ -5,8 +5,8 @@ changes matplotlib's global settings at import time; the course style is applied
 :func:`course_style` (a context manager) or :func:`new_figure`.
 
 Modules: :mod:`.style` (palette, rcParams, ``new_figure``), :mod:`.curves` (curves and
-control polygons), :mod:`.vectors` (tangent, normal, curvature vector, osculating
-circle), :mod:`.curvature` (curvature comb, curvature against arc length),
+control polygons), :mod:`.vectors` (arrows, velocities, tangent, normal, curvature
+vector, osculating circle), :mod:`.curvature` (curvature comb, curvature against arc length),
 :mod:`.constructions` (stitching, Farin-Boehm, Beta-spline and knot-spline
 construction diagrams), :mod:`.blending` (blending functions), :mod:`.surfaces3d`
 (Bézier patches and their normals).
@@ -33,7 +33,15 @@ from .curvature import (
 from .curves import CurveArtists, PointsArtists, plot_control_polygon, plot_curve
 from .style import COURSE_RC, OKABE_ITO, ROLE_COLORS, course_style, new_figure, segment_color
 from .surfaces3d import PatchPairArtists, plot_patch, plot_patch_pair
-from .vectors import FrameArtists, OsculatingCircleArtists, plot_frame, plot_osculating_circle
+from .vectors import (
+    FrameArtists,
+    OsculatingCircleArtists,
+    VectorArtists,
+    plot_frame,
+    plot_osculating_circle,
+    plot_vectors,
+    plot_velocity,
+)
 
 __all__ = [
     "COURSE_RC",
@@ -48,6 +56,7 @@ __all__ = [
     "OsculatingCircleArtists",
     "PatchPairArtists",
     "PointsArtists",
+    "VectorArtists",
     "blending_functions",
     "course_style",
     "curvature_profile",
@@ -66,5 +75,7 @@ __all__ = [
     "plot_patch",
     "plot_patch_pair",
     "plot_stitching",
+    "plot_vectors",
+    "plot_velocity",
     "segment_color",
 ]

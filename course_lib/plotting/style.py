@@ -21,6 +21,7 @@ __all__ = [
     "SIZES",
     "course_style",
     "new_figure",
+    "resolve_pyplot_backend",
     "segment_color",
 ]
 
@@ -112,8 +113,37 @@ def course_style() -> Iterator[None]:
     """
     import matplotlib as mpl
 
+    resolve_pyplot_backend()
     with mpl.rc_context(_rc()):
-        yield
+        try:
+            yield
+        finally:
+            interactive = mpl.is_interactive()
+    # A backend activated inside the block may switch interactive mode on (ipykernel's
+    # inline backend does, when pyplot first loads it); rc_context would switch it back
+    # off on exit, and later figures would never be shown.  Keep what the block set.
+    mpl.interactive(interactive)
+
+
+def resolve_pyplot_backend() -> None:
+    """Load pyplot's backend now, if pyplot is in use, so that its set-up is not undone.
+
+    pyplot loads its backend lazily, at the first figure.  ipykernel's inline backend
+    then switches interactive mode on (and may set rcParams); inside
+    :func:`course_style` those changes would be rolled back when the block ends, and
+    every later figure of the notebook would stay invisible.  Does nothing when pyplot
+    has not been imported (bare ``Figure`` objects need no backend).
+    """
+    import sys
+
+    plt = sys.modules.get("matplotlib.pyplot")
+    if plt is None:
+        return
+    get_backend_mod = getattr(plt, "_get_backend_mod", None)  # matplotlib >= 3.6
+    if get_backend_mod is not None:
+        get_backend_mod()
+    else:  # pragma: no cover - older matplotlib
+        plt.switch_backend(plt.get_backend())
 
 
 def new_figure(
@@ -151,10 +181,10 @@ def new_figure(
     kw = dict(subplot_kw)
     if projection is not None:
         kw["projection"] = projection
+    if pyplot:
+        import matplotlib.pyplot as plt  # before course_style(), which then loads its backend
     with course_style():
         if pyplot:
-            import matplotlib.pyplot as plt
-
             fig, ax = plt.subplots(
                 nrows, ncols, figsize=figsize, subplot_kw=kw or None, layout="constrained"
             )

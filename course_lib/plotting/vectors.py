@@ -1,4 +1,5 @@
-"""Unit tangent, unit normal and curvature vector at chosen parameters; the osculating circle.
+"""Arrows: any vectors, velocities, and the unit tangent, unit normal and curvature vector
+at chosen parameters; the osculating circle.
 
 Arrows are drawn in data units with ``quiver(..., angles="xy", scale_units="xy",
 scale=1)``, so an arrow of length ``L`` in the picture is a vector of length ``L``
@@ -13,14 +14,19 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import differential_geometry as dg
+from .._validation import as_parameter_array, as_points, check_integer, check_positive
+from ..parametrization import as_parametrization, check_in_domain
 from .style import ROLE_COLORS, SIZES
 
 __all__ = [
     "FrameArtists",
     "OsculatingCircleArtists",
+    "VectorArtists",
     "default_length",
     "plot_frame",
     "plot_osculating_circle",
+    "plot_vectors",
+    "plot_velocity",
 ]
 
 
@@ -76,7 +82,7 @@ class FrameArtists:
             self.curvature.set_UVC(K[:, 0] * self.curvature_scale, K[:, 1] * self.curvature_scale)
 
 
-def _quiver(ax, p, v, color, label, zorder):
+def _quiver(ax, p, v, color, label, zorder, width=0.006):
     return ax.quiver(
         p[:, 0],
         p[:, 1],
@@ -86,12 +92,178 @@ def _quiver(ax, p, v, color, label, zorder):
         scale_units="xy",
         scale=1.0,
         color=color,
-        width=0.006,
+        width=width,
         headwidth=4.0,
         headlength=5.0,
         headaxislength=4.5,
         zorder=zorder,
         label=label,
+    )
+
+
+def _bases_and_vectors(bases, vectors) -> tuple[np.ndarray, np.ndarray]:
+    """``(m, 2)`` arrays; a single base (or vector) is shared by all arrows."""
+    P = as_points(np.atleast_2d(np.asarray(bases, dtype=float)), "bases", min_points=1, dims=(2,))
+    V = as_points(
+        np.atleast_2d(np.asarray(vectors, dtype=float)), "vectors", min_points=1, dims=(2,)
+    )
+    if P.shape[0] != V.shape[0]:
+        if P.shape[0] == 1:
+            P = np.repeat(P, V.shape[0], axis=0)
+        elif V.shape[0] == 1:
+            V = np.repeat(V, P.shape[0], axis=0)
+        else:
+            raise ValueError(
+                f"bases and vectors must have the same number of rows (or one of them a "
+                f"single row); got {P.shape[0]} bases and {V.shape[0]} vectors"
+            )
+    return P, V
+
+
+@dataclass
+class VectorArtists:
+    """Artists of :func:`plot_vectors` and :func:`plot_velocity`.
+
+    Attributes
+    ----------
+    quiver : Quiver
+        The arrows; arrow ``i`` goes from ``bases[i]`` to ``bases[i] + scale * vectors[i]``.
+    scale : float
+        Drawn length / vector length (fixed when the artists are created).
+    """
+
+    quiver: object
+    scale: float
+
+    @property
+    def artists(self) -> list:
+        return [self.quiver]
+
+    @property
+    def n_arrows(self) -> int:
+        return int(self.quiver.N)
+
+    def update(self, bases, vectors) -> None:
+        """Move the arrows (same number of arrows, same ``scale``).
+
+        Raises
+        ------
+        ValueError
+            If the number of arrows changes (a Quiver has a fixed number of arrows).
+        """
+        P, V = _bases_and_vectors(bases, vectors)
+        if P.shape[0] != self.n_arrows:
+            raise ValueError(
+                f"update needs {self.n_arrows} arrows (as when drawn); got {P.shape[0]}"
+            )
+        self.quiver.set_offsets(P)
+        self.quiver.set_UVC(V[:, 0] * self.scale, V[:, 1] * self.scale)
+
+
+def plot_vectors(
+    ax,
+    bases,
+    vectors,
+    *,
+    scale: float = 1.0,
+    color: str | None = None,
+    label: str | None = None,
+    width: float = 0.006,
+    zorder: float = 5,
+) -> VectorArtists:
+    """Draw the arrows ``bases[i] -> bases[i] + scale * vectors[i]`` in data units.
+
+    The arrows are true to the data (``quiver(..., angles="xy", scale_units="xy",
+    scale=1)``): a vector ``(2, 1)`` drawn with ``scale=0.5`` ends exactly one unit to
+    the right of and half a unit above its base, whatever the Axes' aspect.
+
+    Parameters
+    ----------
+    bases, vectors : array_like of shape (m, 2) or (2,)
+        Where the arrows start, and the vectors; a single row is shared by all arrows.
+    scale : float
+        Factor (> 0) from vector to drawn arrow; say it in the label, e.g.
+        ``"q'(1), drawn × ½"``.
+    color : str, optional
+        Default: the course's tangent colour.
+    label : str, optional
+        Legend entry.
+    width : float
+        Shaft width as a fraction of the Axes width.
+
+    Returns
+    -------
+    VectorArtists
+
+    Raises
+    ------
+    ValueError
+        If the shapes do not match, a value is not finite, or ``scale <= 0``.
+    """
+    scale = check_positive(scale, "scale")
+    P, V = _bases_and_vectors(bases, vectors)
+    q = _quiver(
+        ax, P, V * scale, ROLE_COLORS["tangent"] if color is None else color, label, zorder, width
+    )
+    return VectorArtists(q, scale)
+
+
+def plot_velocity(
+    ax,
+    curve,
+    t: float | np.ndarray,
+    *,
+    scale: float = 1.0,
+    n: int = 1,
+    color: str | None = None,
+    label: str | None = None,
+    width: float = 0.006,
+    zorder: float = 5,
+) -> VectorArtists:
+    """Draw the velocity vectors ``c'(t)`` (``n = 1``; ``n``-th derivatives for ``n > 1``)
+    of a plane parametrization at the points ``c(t)``, scaled by ``scale``.
+
+    The velocity is a property of the parametrization, not of the curve (seed 000 §4):
+    equivalent parametrizations give parallel arrows of different lengths.
+
+    Parameters
+    ----------
+    curve : parametrization (protocol of CONTRIBUTING.md), plane
+        At an interior joint of a PiecewiseBezier the segment that starts there is used;
+        pass ``curve.segment_curve(i)`` for the other side.
+    t : float or array_like
+        Parameters in the domain.
+    scale : float
+        Drawn arrow = ``scale * c^(n)(t)`` (> 0).
+
+    Returns
+    -------
+    VectorArtists
+
+    Raises
+    ------
+    TypeError
+        If ``curve`` does not follow the parametrization protocol.
+    ValueError
+        If ``t`` leaves the domain, ``n < 1``, ``scale <= 0`` or the curve is not plane.
+    """
+    curve = as_parametrization(curve)
+    if curve.dim != 2:
+        raise ValueError(
+            f"plot_velocity draws plane curves (dim 2); this curve has dim {curve.dim}"
+        )
+    n = check_integer(n, "n", minimum=1)
+    tt, _ = as_parameter_array(t, "t")
+    tt = check_in_domain(tt, tuple(curve.domain))
+    return plot_vectors(
+        ax,
+        curve.evaluate(tt),
+        curve.evaluate(tt, n),
+        scale=scale,
+        color=color,
+        label=label,
+        width=width,
+        zorder=zorder,
     )
 
 

@@ -102,9 +102,12 @@ def free_port() -> int:
 
 
 def processes_under(path: Path) -> list[str]:
-    """``pid cmdline`` of every process whose command line or cwd mentions ``path``."""
+    """``pid cmdline`` of every process whose command line or cwd mentions ``path``
+    (Linux /proc; elsewhere nothing can be checked and the list is empty)."""
     key = str(path).rstrip("/") + "/"
     found = []
+    if not Path("/proc").is_dir():
+        return found
     for d in Path("/proc").iterdir():
         if not d.name.isdigit() or int(d.name) == os.getpid():
             continue

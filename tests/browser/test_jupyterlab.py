@@ -17,7 +17,8 @@ picture, and nothing is left running.
 The kernel is asked where the demo's points are (``window.jupyterapp`` is exposed; the probe
 looks for an object with ``state.points`` and ``view.ax``/``view.fig``, as
 ``course_lib.widgets.Demo`` has) and tags that demo's box with ``cl-test-target``, so a
-notebook with several demos is fine.  Run alone: ``.venv/bin/python -m pytest -m browser``.
+notebook with several demos is fine.  Run alone: ``.venv/bin/python -m pytest tests/browser``
+(screenshots, server logs and timings land in test-artifacts/).
 """
 
 from __future__ import annotations
@@ -85,6 +86,20 @@ def wait_for_new_picture(locator, before: bytes, *, timeout: float = 10.0,
     raise AssertionError(f"the canvas did not change ({n} pixels differ after {timeout} s)")
 
 
+def settle(canvas, report, *, quiet_ms: int = 500, timeout: float = 15.0) -> bytes:
+    """Wait until the picture and the report stop changing (the kernel may still be working
+    through queued events); return the final screenshot."""
+    png, text = canvas.screenshot(), report.inner_text()
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        canvas.page.wait_for_timeout(quiet_ms)
+        png2, text2 = canvas.screenshot(), report.inner_text()
+        if png2 == png and text2 == text:
+            return png
+        png, text = png2, text2
+    raise AssertionError(f"the demo kept changing for {timeout} s")
+
+
 def find_slider(demo):
     for sel in SLIDERS:
         loc = demo.locator(f"{sel} .noUi-handle")
@@ -102,7 +117,8 @@ def move_slider(page, demo, steps: int = 3) -> tuple[str, str, int]:
     expect(report).not_to_be_empty()
     sel, handle = find_slider(demo)
     handle.scroll_into_view_if_needed()
-    before_text, before_png = report.inner_text(), canvas.screenshot()
+    before_png = settle(canvas, report)
+    before_text = report.inner_text()
     readout = demo.locator(f"{sel} .widget-readout").first
     before_value = readout.inner_text() if readout.count() else None
     handle.focus()
@@ -113,6 +129,7 @@ def move_slider(page, demo, steps: int = 3) -> tuple[str, str, int]:
         expect(readout).not_to_have_text(before_value, timeout=10_000)
     expect(report).not_to_have_text(before_text, timeout=10_000)
     n = wait_for_new_picture(canvas, before_png)
+    settle(canvas, report)
     return sel, before_text, n
 
 
@@ -358,7 +375,8 @@ class TestJupyterLab:
         tx, ty = (px + 30 * (cx - px) / d, py + 30 * (cy - py) / d) if d > 30 else (px + 30, py)
 
         report = demo.locator(".cl-report").first
-        before_text, before_png = report.inner_text(), canvas.screenshot()
+        before_png = settle(canvas, report)
+        before_text = report.inner_text()
         drag(page, box["x"] + px, box["y"] + py, box["x"] + tx, box["y"] + ty)
         # The kernel handles each motion event in turn (a redraw each, ~0.2 s on a busy
         # machine) and may still be at it: wait until the point has arrived (mouse events
@@ -376,6 +394,7 @@ class TestJupyterLab:
         n = wait_for_new_picture(canvas, before_png)
         assert n >= 30
         expect(report).not_to_have_text(before_text, timeout=10_000)
+        settle(canvas, report)
         # no callback failed during the interaction
         errors = demo.locator(".cl-output").all_inner_texts()
         assert not "".join(errors).strip(), errors

@@ -8,7 +8,6 @@ reduction to C^n for β = (1, 0, ..., 0).
 
 from __future__ import annotations
 
-
 import numpy as np
 import pytest
 

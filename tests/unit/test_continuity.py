@@ -253,3 +253,27 @@ def test_knot_ratio_equal_to_beta1_gives_c1():
     (rep,) = curve_continuity(PiecewiseBezier([q.segments[0], r.segments[0]], [0.0, 1.0, 3.0]))
     assert rep.c_order == 1
     check_agree(rep, 1)
+
+
+def test_report_prints_rounding_noise_as_zero_but_keeps_real_values():
+    from course_lib.continuity import DISPLAY_ZERO, JointReport
+
+    rep = JointReport(
+        index=0,
+        point=(1.0, 2e-16),
+        gap=3e-17,
+        tangent_angle=4.577e-14,
+        curvature_jump=0.25,
+        c_order=1,
+        g_order=2,
+        betas=(1.5, 1.599e-15),
+        residuals=(1e-16, 2e-3),
+        g_order_by={"reparametrization": 2, "beta_constraints": 2, "arc_length": 2},
+        max_order=4,
+    )
+    text, html = str(rep), rep._repr_html_()
+    for noise in ("e-14", "e-15", "e-16", "e-17"):
+        assert noise not in text and noise not in html
+    assert "tangent angle 0°" in text and "β2 = 0" in text
+    assert "curvature jump 0.25" in text and "0.002" in text and "β1 = 1.5" in text
+    assert DISPLAY_ZERO <= 1e-9
