@@ -20,6 +20,8 @@ where ``B_{i,k}`` are the partial Bell polynomials (Faà di Bruno's formula).
   Seed 001 also says "β_i > 0" after eq. (2.4); only ``β_1 > 0`` is required.
 * :func:`apply_beta_constraints` and :func:`solve_shape_parameters` are the
   numeric form (pure numpy, Bell polynomials; sympy is not imported).
+
+Lesson: ``notebooks/02_beta_constraints.ipynb``.
 """
 
 from __future__ import annotations

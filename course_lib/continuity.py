@@ -29,6 +29,8 @@ is traversed.
 
 For a :class:`~course_lib.curve.PiecewiseBezier`, :func:`curve_continuity` uses the
 *global* parameter (knots): the knots change the C-order but never the G-order.
+
+Lesson: ``notebooks/02_beta_constraints.ipynb`` (the three characterizations agree).
 """
 
 from __future__ import annotations

@@ -15,6 +15,8 @@ of every order by :func:`sympy.diff`, compiled with :func:`sympy.lambdify` once 
 cached) or from numpy callables, one per derivative order.
 
 A parametrization is a *function*; the curve is its image (seed 000 §1-2, §4).
+
+Lesson: ``notebooks/01_reparametrization.ipynb`` (seed 000 Examples 1-2).
 """
 
 from __future__ import annotations

@@ -13,7 +13,12 @@ import numpy as np
 
 from .. import differential_geometry as dg
 from .._validation import check_integer
-from ._sampling import segment_grid
+from ._sampling import (
+    segment_arc_lengths,
+    segment_derivatives,
+    segment_grid,
+    tangent_and_curvature,
+)
 from .style import ROLE_COLORS, SIZES, segment_color
 
 __all__ = [
@@ -38,13 +43,23 @@ def comb_teeth(curve, per_segment: int, scale: float, side: int = -1):
     curvature vector (``kappa N`` in the plane): perpendicular to the curve, of length
     ``scale * |kappa|``; ``side = -1`` (default) points away from the centre of curvature.
     """
-    t = segment_grid(curve, per_segment)
-    flat = t.ravel()
-    feet = curve.evaluate(flat)
-    K = dg.curvature_vector(curve, flat)
-    tips = feet + (side * scale) * K
-    shape = (*t.shape, curve.dim)
-    return feet.reshape(shape), tips.reshape(shape)
+    feet, _T, K = _frame_samples(curve, per_segment)
+    return feet, feet + (side * scale) * K
+
+
+def _frame_samples(curve, per_segment: int):
+    """Points, unit tangents ``T`` and curvature vectors ``K = dT/ds`` on the segment grid,
+    each ``(S, n, dim)``, from one pass over the derivatives (cached Bernstein matrices,
+    :func:`~course_lib.plotting._sampling.segment_derivatives`).
+
+    Raises
+    ------
+    ValueError
+        Where the parametrization is not regular.
+    """
+    P, d1, d2 = segment_derivatives(curve, per_segment, (0, 1, 2))
+    T, K = tangent_and_curvature(curve, d1, d2, segment_grid(curve, per_segment))
+    return P, T, K
 
 
 @dataclass
@@ -143,8 +158,7 @@ def plot_curvature_comb(
     sgn = -1 if side == "outside" else 1
     n = _per_segment(curve, samples)
     if scale is None:
-        t = segment_grid(curve, n).ravel()
-        scale = _auto_scale(curve, dg.curvature_vector(curve, t))
+        scale = _auto_scale(curve, _frame_samples(curve, n)[2].reshape(-1, curve.dim))
     feet, tips = comb_teeth(curve, n, scale, sgn)
     (teeth,) = ax.plot(
         *_teeth_path(feet, tips),
@@ -182,19 +196,22 @@ def curvature_profile(
     ``signed=True``) or ``|kappa|``.  Row ``i`` is segment ``i``, its last entry the
     one-sided limit at the joint.
 
-    ``arc_length_every = k > 1`` computes the arc length (the costly part) exactly at
-    every k-th sample and at both ends of every segment, and linearly in the parameter
-    between them -- for live widgets; the joints stay exact.
+    ``arc_length_every = k > 1`` computes the arc length (the costly part) at every k-th
+    sample and at both ends of every segment (fixed Gauss-Legendre sums with cached
+    Bernstein matrices, :func:`~course_lib.plotting._sampling.segment_arc_lengths`), and
+    linearly in the parameter between them -- for live widgets; the joints stay exact.
     """
     if x not in ("arc_length", "parameter"):
         raise ValueError(f"x must be 'arc_length' or 'parameter'; got {x!r}")
     every = check_integer(arc_length_every, "arc_length_every", minimum=1)
     t = segment_grid(curve, per_segment)
     flat = t.ravel()
+    _P, T, K = _frame_samples(curve, per_segment)
     if signed and curve.dim == 2:
-        k = dg.signed_curvature(curve, flat)
+        # K = kappa N with N = T turned +90 degrees (seed 004 §19.2), so kappa = T x K
+        k = T[..., 0] * K[..., 1] - T[..., 1] * K[..., 0]
     else:
-        k = dg.curvature(curve, flat)
+        k = np.linalg.norm(K, axis=-1)
     if x == "parameter":
         X = t.copy()
     elif every == 1:
@@ -202,7 +219,10 @@ def curvature_profile(
     else:
         n = t.shape[1]
         idx = np.unique(np.r_[0:n:every, n - 1])
-        S = np.asarray(dg.cumulative_arc_length(curve, t[:, idx].ravel())).reshape(-1, idx.size)
+        S = segment_arc_lengths(curve, n, idx)
+        if S is None:
+            S = np.asarray(dg.cumulative_arc_length(curve, t[:, idx].ravel()))
+            S = S.reshape(-1, idx.size)
         u = np.linspace(0.0, 1.0, n)  # every row is affine in u: the same weights for all
         j = np.clip(np.searchsorted(idx, np.arange(n), side="right") - 1, 0, idx.size - 2)
         w = (u - u[idx[j]]) / (u[idx[j + 1]] - u[idx[j]])

@@ -16,6 +16,7 @@ import numpy as np
 from .. import differential_geometry as dg
 from .._validation import as_parameter_array, as_points, check_integer, check_positive
 from ..parametrization import as_parametrization, check_in_domain
+from ._sampling import point_derivatives, tangent_and_curvature
 from .style import ROLE_COLORS, SIZES
 
 __all__ = [
@@ -67,10 +68,10 @@ class FrameArtists:
     def update(self, curve, t) -> None:
         """Move the frame to the parameters ``t`` of ``curve``."""
         t = np.atleast_1d(np.asarray(t, dtype=float))
-        p = curve.evaluate(t)
+        # points, T = dc/ds and K = d2c/ds2 (seed 000 §6) from one pass over c, c', c''
+        p, d1, d2 = point_derivatives(curve, t, (0, 1, 2))
+        T, K = tangent_and_curvature(curve, d1, d2, t)
         self.point.set_data(p[:, 0], p[:, 1])
-        # T = dc/ds and K = d2c/ds2 in one call (seed 000 §6)
-        T, K = dg.arc_length_derivatives(curve, t, 2)
         if self.tangent is not None:
             self.tangent.set_offsets(p)
             self.tangent.set_UVC(T[:, 0] * self.length, T[:, 1] * self.length)
