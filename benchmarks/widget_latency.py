@@ -101,9 +101,12 @@ def measure(
     import matplotlib
 
     matplotlib.use("Agg")
-    from course_lib import differential_geometry as dg
     from course_lib.beta_splines import cubic_beta_spline
-    from course_lib.plotting._sampling import segment_samples
+    from course_lib.plotting._sampling import (
+        point_derivatives,
+        segment_samples,
+        tangent_and_curvature,
+    )
     from course_lib.plotting.curvature import comb_teeth, curvature_profile
     from course_lib.widgets import CurveDemoView, beta_spline_demo, joint_report
 
@@ -152,7 +155,8 @@ def measure(
         c = cubic_beta_spline(P, beta1=b, beta2=0.0)
         segment_samples(c, view.curve_artists.per_segment)
         comb_teeth(c, n_comb, 1.0)
-        dg.arc_length_derivatives(c, [st.t], 2)  # T and dT/ds at the moving point
+        # the moving point with T and dT/ds, as FrameArtists.update computes them
+        tangent_and_curvature(c, *point_derivatives(c, [st.t], (0, 1, 2))[1:], [st.t])
         curvature_profile(c, n_prof, arc_length_every=view.profile.arc_length_every)
 
     math_t = _median(math_only, values)

@@ -58,7 +58,7 @@ def as_points(
         )
     if arr.shape[0] < min_points:
         raise ValueError(f"{name} must have at least {min_points} points; got {arr.shape[0]}")
-    if not np.all(np.isfinite(arr)):
+    if not np.isfinite(arr).all():
         bad = int(np.argwhere(~np.isfinite(arr))[0, 0])
         raise ValueError(
             f"{name} must contain only finite values; point {bad} is {arr[bad].tolist()}"
@@ -88,7 +88,7 @@ def as_parameter_array(value: object, name: str) -> tuple[np.ndarray, bool]:
     if arr.ndim > 1:
         raise ValueError(f"{name} must be a scalar or a 1-d array; got shape {arr.shape}")
     arr = np.atleast_1d(arr)
-    if not np.all(np.isfinite(arr)):
+    if not np.isfinite(arr).all():
         raise ValueError(f"{name} must contain only finite values")
     return arr, scalar
 

@@ -111,7 +111,7 @@ class Report:
 
     def _repr_html_(self) -> str:
         rows = "".join(v._repr_html_() for v in self.verdicts)
-        return f'<div class="cl-report"><p><b>{html.escape(self._summary())}</b></p>{rows}</div>'
+        return f'<div class="cl-check-report"><p><b>{html.escape(self._summary())}</b></p>{rows}</div>'
 
 
 class AnswerProblem(Exception):

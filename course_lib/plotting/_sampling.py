@@ -134,7 +134,8 @@ def tangent_and_curvature(
     ------
     ValueError
         Where ``|c'|`` vanishes relative to the curve's size (the regularity rule of
-        :mod:`course_lib.differential_geometry`); ``t`` (same leading shape) names the place.
+        :mod:`course_lib.differential_geometry`); ``t`` (same leading shape as the
+        derivatives, or a callable returning it) names the place.
     """
     from .. import differential_geometry as dg
 
@@ -148,6 +149,7 @@ def tangent_and_curvature(
         typical = dg._typical_speed(curve)
     bad = v <= dg.REGULARITY_RTOL * typical
     if np.any(bad):
+        t = t() if callable(t) else t
         i = np.unravel_index(int(np.argmax(bad)), bad.shape)
         raise ValueError(
             f"the parametrization is not regular at t={float(np.asarray(t)[i]):.12g}: the "

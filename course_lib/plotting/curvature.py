@@ -58,7 +58,7 @@ def _frame_samples(curve, per_segment: int):
         Where the parametrization is not regular.
     """
     P, d1, d2 = segment_derivatives(curve, per_segment, (0, 1, 2))
-    T, K = tangent_and_curvature(curve, d1, d2, segment_grid(curve, per_segment))
+    T, K = tangent_and_curvature(curve, d1, d2, lambda: segment_grid(curve, per_segment))
     return P, T, K
 
 

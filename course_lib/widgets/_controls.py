@@ -16,17 +16,20 @@ __all__ = ["assemble_curve_demo"]
 def _slider(spec: SliderSpec, value: float):
     import ipywidgets as w
 
+    spec.check(value)  # never clamp silently
+
     style = {"description_width": "3em"}
     layout = w.Layout(width="22em")
     if spec.log:
         if spec.min <= 0:
             raise ValueError(f"a log slider needs min > 0; {spec.name} has min {spec.min}")
         # exponent bounds on the step grid, so that 10**0 = 1 is a slider position
-        # (otherwise the browser snaps an initial β1 = 1 to 0.9976)
-        lo = float(np.ceil(np.log10(spec.min) / spec.step - 1e-9) * spec.step)
-        hi = float(np.floor(np.log10(spec.max) / spec.step + 1e-9) * spec.step)
+        # (otherwise the browser snaps an initial β1 = 1 to 0.9976); rounded outwards, so
+        # that the whole range [min, max] is on the slider
+        lo = float(np.floor(np.log10(spec.min) / spec.step + 1e-9) * spec.step)
+        hi = float(np.ceil(np.log10(spec.max) / spec.step - 1e-9) * spec.step)
         s = w.FloatLogSlider(
-            value=float(np.clip(value, 10.0**lo, 10.0**hi)),
+            value=float(value),
             base=10,
             min=lo,
             max=hi,
@@ -39,7 +42,7 @@ def _slider(spec: SliderSpec, value: float):
         )
     else:
         s = w.FloatSlider(
-            value=float(np.clip(value, spec.min, spec.max)),
+            value=float(value),
             min=spec.min,
             max=spec.max,
             step=spec.step,

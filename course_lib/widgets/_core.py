@@ -29,6 +29,7 @@ import numpy as np
 from .._validation import as_points, check_finite_scalar, check_integer
 
 __all__ = [
+    "CANVAS_WIDTH_PX",
     "CurveDemoState",
     "CurveDemoView",
     "Demo",
@@ -69,6 +70,20 @@ class SliderSpec:
     log: bool = False
     per_joint: bool = True
 
+    def check(self, value) -> None:
+        """Raise ``ValueError`` if ``value`` (a scalar or one value per joint) leaves
+        ``[min, max]``: a demo must not start from a value its slider cannot show (the
+        slider would silently clamp it while the state keeps the true value)."""
+        a = np.atleast_1d(np.asarray(value, dtype=float))
+        bad = ~((a >= self.min) & (a <= self.max))
+        if np.any(bad):
+            j = int(np.argmax(bad))
+            at = f" at joint {j}" if a.size > 1 else ""
+            raise ValueError(
+                f"{self.name} must lie in [{self.min:g}, {self.max:g}] (the range of this "
+                f"demo's {self.description} slider); got {a[j]:g}{at}"
+            )
+
 
 class CurveDemoState:
     """The state of a curve demo and what follows from it.
@@ -91,7 +106,8 @@ class CurveDemoState:
     Raises
     ------
     ValueError
-        If the initial data is invalid: the construction's own error, unchanged.
+        If the initial data is invalid: the construction's own error, unchanged; if
+        ``t`` lies outside the curve's domain.
     """
 
     def __init__(
@@ -128,6 +144,8 @@ class CurveDemoState:
         self.joint = self._check_joint(joint)
         a, b = self.curve.domain
         self.t = 0.5 * (a + b) if t is None else check_finite_scalar(t, "t")
+        if not a <= self.t <= b:  # the t slider spans the domain: no silent clamping
+            raise ValueError(f"t must lie in the curve's domain [{a:g}, {b:g}]; got {self.t:g}")
         self.report = None
         self.warning = ""
         self.view: CurveDemoView | None = None
@@ -266,14 +284,22 @@ class CurveDemoState:
 
 
 # ------------------------------------------------------------------------ figure
+#: Width in CSS pixels of an interactive demo's canvas.  JupyterLab's notebook column is
+#: about 970 px wide in a 1400 px browser window with the file browser open (measured
+#: with headless Chromium); a wider canvas is clipped on the right.
+CANVAS_WIDTH_PX = 880
+
+
 def make_figure(figsize: tuple[float, float], static: bool):
-    """A bare Figure on an Agg canvas (``static``) or on an ipympl canvas widget."""
+    """A bare Figure on an Agg canvas (``static``, 100 dpi) or on an ipympl canvas widget
+    (``CANVAS_WIDTH_PX`` wide: the dpi is chosen for it, the layout stays the same)."""
     from matplotlib.figure import Figure
 
     from ..plotting.style import course_style
 
+    dpi = 100.0 if static else CANVAS_WIDTH_PX / float(figsize[0])
     with course_style():
-        fig = Figure(figsize=figsize, dpi=100)
+        fig = Figure(figsize=figsize, dpi=dpi)
     if static:
         from matplotlib.backends.backend_agg import FigureCanvasAgg
 
@@ -370,6 +396,7 @@ class CurveDemoView:
         from ..plotting.style import OKABE_ITO, course_style
 
         self.state = state
+        self._done: dict = {}  # what was last computed for which curve (see _once)
         self.fig = make_figure(figsize, static)
         with course_style():
             self.ax = self.fig.add_axes((0.04, 0.08, 0.56, 0.84))
@@ -487,7 +514,7 @@ class CurveDemoView:
         """
         c = state.curve
         problems = []
-        self.curve_artists.update(c)
+        self._once("curve", c, lambda: self.curve_artists.update(c))
         self.design.update(state.points)
         jp = c.joint_points
         if c.n_joints:
@@ -497,7 +524,12 @@ class CurveDemoView:
             self.selected.set_data([], [])
         # each picture of derivatives may fail for a degenerate (irregular) curve
         for name, flag, arts, fn in (
-            ("curvature comb", state.show_comb, self.comb.artists, lambda: self._comb(c)),
+            (
+                "curvature comb",
+                state.show_comb,
+                self.comb.artists,
+                lambda: self._once("comb", c, lambda: self._comb(c)),
+            ),
             (
                 "tangent and curvature vectors",
                 state.show_tangents,
@@ -554,9 +586,28 @@ class CurveDemoView:
             self.comb.scale *= 0.15 * size / longest
             self.comb.update(c)
 
+    def _once(self, key: str, curve, fn: Callable[[], None]) -> None:
+        """Run ``fn`` unless it already ran for this very curve object (a moving point, a
+        switch or a new joint leave the curve unchanged: its comb, samples and κ(s) data
+        are not recomputed).  A ValueError it raised is raised again for the same curve."""
+        last = self._done.get(key)
+        if last is not None and last[0] is curve:
+            if last[1] is not None:
+                raise last[1]
+            return
+        try:
+            fn()
+        except ValueError as exc:
+            self._done[key] = (curve, exc)
+            raise
+        self._done[key] = (curve, None)
+
     def _profile(self, c, state) -> None:
-        self.profile.update(c, rescale=False)
-        self._profile_limits()
+        def data():
+            self.profile.update(c, rescale=False)
+            self._profile_limits()
+
+        self._once("profile", c, data)
         # the moving point on the κ(s) plot: s(t) read off the plotted samples
         segs = self.profile.lines.get_segments()
         i = min(int(np.searchsorted(c.knots, state.t, side="right")) - 1, c.n_segments - 1)

@@ -10,9 +10,11 @@ by its ``state`` object, so a test (or a notebook cell) can change it without a 
     demo.state.curve, demo.state.report         # the new curve and joint report
     demo.state.drag(3, 1.0, 2.0)                # as if vertex 3 were dragged to (1, 2)
 
-Bad initial data fails at construction with the math layer's own ``ValueError``;
-slider ranges never allow an invalid value (β1 > 0, knots kept in order); a degenerate
-configuration reached by dragging shows a warning in the report instead of raising.
+Bad initial data fails at construction with the math layer's own ``ValueError``, and
+an initial value outside its slider's range with a ``ValueError`` naming the range
+(never silently clamped); slider ranges never allow an invalid value (β1 > 0, knots
+kept in order); a degenerate configuration reached by dragging shows a warning in the
+report instead of raising.
 """
 
 from __future__ import annotations
@@ -29,6 +31,7 @@ from .reparam import reparametrization_demo
 __all__ = [
     "BETA1",
     "BETA2",
+    "BETA2_STITCH",
     "beta_spline_demo",
     "catmull_rom_demo",
     "curvature_comb_demo",
@@ -39,8 +42,14 @@ __all__ = [
 
 #: β1 slider: logarithmic, so it is strictly positive (0.05 .. 20) and 1 sits in the middle.
 BETA1 = SliderSpec("beta1", "β₁", 0.05, 20.0, 0.01, "cl-slider-beta1", log=True)
-#: β2 slider: 0 .. 50 (β2 >= 0 keeps the cubic Beta-spline in the convex hull).
+#: β2 slider of the Beta-spline demos: 0 .. 50.  The construction accepts β2 < 0 as long
+#: as γ = 2(1 + β1) / (β2 + 2β1(1 + β1)) is defined (seed 000 eq. (12.1), d = 3), but with
+#: β1 down to 0.05 the pole β2 = -2β1(1 + β1) comes as close as -0.105, and β2 >= 0 keeps
+#: the curve in the convex hull of its control polygon.
 BETA2 = SliderSpec("beta2", "β₂", 0.0, 50.0, 0.1, "cl-slider-beta2")
+#: β2 slider of the stitching demo: -10 .. 50.  G2 stitching is defined for every real β2
+#: (seed 000 eq. (11)); only Farin-Boehm's point T needs γ, which the diagram then hides.
+BETA2_STITCH = SliderSpec("beta2", "β₂", -10.0, 50.0, 0.1, "cl-slider-beta2", per_joint=False)
 
 
 def _static(static: bool | None) -> bool:
@@ -59,6 +68,8 @@ def _finish(
     title: str | None = None,
     design_polygon: bool = True,
 ) -> Demo:
+    for spec in sliders:  # an initial value the slider cannot show is an error, not clamped
+        spec.check(state.params[spec.name])
     static = _static(static)
     view = CurveDemoView(
         state,
@@ -293,7 +304,7 @@ def g2_stitch_demo(V=None, beta1=1.0, beta2=0.0, W3=None, *, static: bool | None
         state,
         static=static,
         name="G2 stitching",
-        sliders=[replace(BETA1, per_joint=False), replace(BETA2, per_joint=False)],
+        sliders=[replace(BETA1, per_joint=False), BETA2_STITCH],
         design_polygon=False,
         extras=[_farin_boehm_overlay],  # the diagram labels the points
         title="G2 stitching (Farin-Boehm)",
@@ -301,22 +312,36 @@ def g2_stitch_demo(V=None, beta1=1.0, beta2=0.0, W3=None, *, static: bool | None
 
 
 def _farin_boehm_overlay(view):
-    from ..plotting.constructions import plot_stitching
-    from ..stitching import farin_boehm
+    """Farin-Boehm's diagram (seed 000 Fig. 8), kept up to date.  Where γ is undefined
+    (β2 = -2β1(1 + β1), T at infinity) the parts built on T are hidden; the stitch itself
+    stays valid (the report still shows G2)."""
+    from ..plotting.constructions import plot_farin_boehm
 
-    diagram = plot_stitching(view.ax, view.state.curve, labels=True)
+    V, W = view.state.curve.segments
+    diagram = plot_farin_boehm(view.ax, V, W, V[-2], labels=True)  # T placed by update()
     texts = [diagram.artists[k] for k in diagram.artists if k.startswith("ratio:")]
+    on_T = [diagram.artists[k] for k in ("line:leg", "line:fan", "label:T")] + texts[1:]
 
     def update(state):
+        from ..stitching import farin_boehm
+
         c = state.curve
         V, W = c.segments
-        fb = farin_boehm(V[-3:], state.params["beta1"], state.params["beta2"], V.shape[0] - 1)
         pts = {f"V{i}": V[i] for i in range(len(V))}
         pts.update({f"W{j}": W[j] for j in range(len(W))})
+        try:
+            fb = farin_boehm(V[-3:], state.params["beta1"], state.params["beta2"], V.shape[0] - 1)
+        except ValueError:  # γ undefined: no point T
+            diagram.update(pts, curve=c)
+            for a in on_T:
+                a.set_visible(False)
+            return
         pts["T"] = fb.T
         diagram.update(pts, curve=c)
         texts[1].set_text(f"β₁²γ={state.params['beta1'] ** 2 * fb.gamma:.3g}")
         texts[2].set_text(f"γ={fb.gamma:.3g}")
+        for a in on_T:
+            a.set_visible(True)
 
     return update
 

@@ -14,11 +14,14 @@ import html
 import numpy as np
 
 from .._validation import as_points, check_finite_scalar
-from ._core import Demo, _widgets_available, fit_equal_limits, make_figure
+from ._core import Demo, SliderSpec, _widgets_available, fit_equal_limits, make_figure
 
 __all__ = ["ReparametrizationState", "reparametrization_demo"]
 
 _DEFAULT = [[0.0, 0.0], [1.0, 2.2], [3.2, 2.4], [4.0, 0.4]]
+#: ``a`` in [-0.9, 0.9] keeps ``f' = 1 + a (1 - 2v) >= 0.1 > 0``; ``v`` spans the domain.
+A_SLIDER = SliderSpec("a", "a", -0.9, 0.9, 0.01, "cl-slider-shape", per_joint=False)
+V_SLIDER = SliderSpec("v", "v", 0.0, 1.0, 0.0025, "cl-slider-t", per_joint=False)
 
 
 class ReparametrizationState:
@@ -128,7 +131,7 @@ class ReparametrizationView:
     vectors at the moving point; right: the graph of ``f``."""
 
     def __init__(self, state: ReparametrizationState, static: bool) -> None:
-        from ..plotting import plot_control_polygon, plot_curve
+        from ..plotting import plot_control_polygon, plot_curve, plot_vectors
         from ..plotting.style import OKABE_ITO, course_style
 
         self.state = state
@@ -147,13 +150,16 @@ class ReparametrizationView:
         (self.dots_r,) = self.ax.plot(
             [], [], "s", ms=6, mfc="white", mec=red, mew=1.8, label="Q∘f(v), v equally spaced"
         )
-        kw = dict(angles="xy", scale_units="xy", scale=1.0)
-        self.vel_r = self.ax.quiver(
-            [0], [0], [0], [0], color=red, label="d(Q∘f)/dv (× 1/4)", width=0.012, zorder=6, **kw
-        )
-        self.vel_q = self.ax.quiver(
-            [0], [0], [0], [0], color=blue, label="dQ/du (× 1/4)", width=0.005, zorder=7, **kw
-        )
+        self._scale = 0.25
+        # a wide arrow under a narrow one; draw() puts the shorter of the two on top
+        self.vel_r = plot_vectors(
+            self.ax, [0, 0], [0, 0], scale=self._scale, color=red, width=0.012,
+            label="d(Q∘f)/dv (× 1/4)", zorder=6,
+        )  # fmt: skip
+        self.vel_q = plot_vectors(
+            self.ax, [0, 0], [0, 0], scale=self._scale, color=blue, width=0.005,
+            label="dQ/du (× 1/4)", zorder=7,
+        )  # fmt: skip
         (self.point,) = self.ax.plot([], [], "o", color="black", ms=8, zorder=8)
         self.ax.set_title("one curve, two parametrizations", fontsize=13)
         v = np.linspace(0, 1, 101)
@@ -166,7 +172,6 @@ class ReparametrizationView:
         self.fax.set_xlabel("v")
         self.fax.set_ylabel("u = f(v)")
         self.fax.set_title("change of variables f", fontsize=12)
-        self._scale = 0.25
         self.draw(state)
         fit_equal_limits(self.ax, state.points, margin=0.08, top=0.3)
         self.ax.legend(loc="upper center", ncol=2, fontsize=10)
@@ -182,11 +187,14 @@ class ReparametrizationView:
         self.dots_r.set_data(pr[:, 0], pr[:, 1])
         p = st.curve.evaluate(st.u)
         self.point.set_data([p[0]], [p[1]])
-        dq = st.curve.evaluate(st.u, 1) * self._scale
-        dr = st.reparametrized.evaluate(st.v, 1) * self._scale
-        for q, d in ((self.vel_q, dq), (self.vel_r, dr)):
-            q.set_offsets([p])
-            q.set_UVC([d[0]], [d[1]])
+        dq = st.curve.evaluate(st.u, 1)
+        dr = st.reparametrized.evaluate(st.v, 1)
+        self.vel_q.update(p, dq)
+        self.vel_r.update(p, dr)
+        # both arrows start at the point: the shorter one on top, or the longer would hide it
+        q_on_top = float(np.linalg.norm(dq)) <= float(np.linalg.norm(dr))
+        self.vel_q.quiver.set_zorder(7 if q_on_top else 6)
+        self.vel_r.quiver.set_zorder(6 if q_on_top else 7)
         v = np.linspace(0, 1, 101)
         self.fline.set_ydata(st.f(v))
         self.fpt.set_data([st.v], [st.u])
@@ -206,10 +214,13 @@ def reparametrization_demo(
     Raises
     ------
     ValueError
-        If ``|a| >= 1`` or the points are bad.
+        If ``|a| >= 1`` or the points are bad; if ``a`` or ``v`` lies outside its
+        slider's range (``[-0.9, 0.9]``, ``[0, 1]``).
     """
     static = (not _widgets_available()) if static is None else bool(static)
-    state = ReparametrizationState(points, a, v)
+    state = ReparametrizationState(points, a, v)  # |a| >= 1 raises here
+    A_SLIDER.check(state.a)  # no initial value outside its slider (never clamped)
+    V_SLIDER.check(state.v)
     view = ReparametrizationView(state, static)
     demo = Demo(state, view, static=static)
     demo.name = "reparametrization"
@@ -221,26 +232,26 @@ def reparametrization_demo(
 
     sa = w.FloatSlider(
         value=state.a,
-        min=-0.9,
-        max=0.9,
-        step=0.01,
-        description="a",
+        min=A_SLIDER.min,
+        max=A_SLIDER.max,
+        step=A_SLIDER.step,
+        description=A_SLIDER.description,
         continuous_update=True,
         style={"description_width": "3em"},
         layout=w.Layout(width="22em"),
     )
-    sa.add_class("cl-slider-shape")
+    sa.add_class(A_SLIDER.css)
     sv = w.FloatSlider(
         value=state.v,
-        min=0.0,
-        max=1.0,
-        step=0.0025,
-        description="v",
+        min=V_SLIDER.min,
+        max=V_SLIDER.max,
+        step=V_SLIDER.step,
+        description=V_SLIDER.description,
         continuous_update=True,
         style={"description_width": "3em"},
         layout=w.Layout(width="22em"),
     )
-    sv.add_class("cl-slider-t")
+    sv.add_class(V_SLIDER.css)
     demo.controls.update(a=sa, t=sv)
     sa.observe(demo.guard(lambda ch: state.set_a(ch["new"])), names="value")
     sv.observe(demo.guard(lambda ch: state.set_t(ch["new"])), names="value")

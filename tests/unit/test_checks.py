@@ -273,6 +273,9 @@ def test_check_all_reports_missing_and_deleted_names():
     assert report.n_passed == 1 and len(report.verdicts) == len(questions("hw01"))
     assert "is not defined" in str(report.verdicts[1])
     assert "1 of 7" in report._repr_html_()
+    # its own CSS class: cl-report is the live report of the widgets (tests/browser)
+    assert 'class="cl-check-report"' in report._repr_html_()
+    assert "cl-report" not in report._repr_html_().replace("cl-check-report", "")
     full = {name: RIGHT[q] for q, name in ((q, checks.registry()[q].answer_name) for q in questions("hw01"))}
     assert check_all(full, "hw01").all_passed
     assert not check_all({}, None).all_passed

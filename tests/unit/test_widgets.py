@@ -366,3 +366,114 @@ def test_automatic_static_fallback_without_widgets(monkeypatch):
     demo = demos.beta_spline_demo()
     assert demo.widget is None and type(demo.figure.canvas).__name__ == "FigureCanvasAgg"
     assert "image/png" in demo._repr_mimebundle_()
+
+
+# ------------------------------------------------- arrows, ranges, layout, speed
+def _arrow_length(vectors) -> float:
+    q = vectors.quiver
+    return float(np.hypot(q.U[0], q.V[0]))
+
+
+@pytest.mark.parametrize("v", [0.3, 0.9])  # f'(0.3) = 1.24 > 1, f'(0.9) = 0.52 < 1
+def test_reparametrization_demo_draws_the_shorter_velocity_on_top(v):
+    demo = reparametrization_demo(v=v, static=True)
+    vq, vr = demo.view.vel_q, demo.view.vel_r
+    fprime = 1 + 0.6 * (1 - 2 * v)  # f(v) = v + a v (1 - v), a = 0.6
+    np.testing.assert_allclose(_arrow_length(vr), fprime * _arrow_length(vq), rtol=1e-12)
+    short, long_ = (vq, vr) if fprime > 1 else (vr, vq)
+    assert short.quiver.get_zorder() > long_.quiver.get_zorder()
+    demo.state.set_t(1.2 - v)  # the other side of v = 1/2: the order flips
+    short, long_ = long_, short
+    assert short.quiver.get_zorder() > long_.quiver.get_zorder()
+
+
+def test_g2_stitch_demo_accepts_a_negative_beta2():
+    demo = g2_stitch_demo(beta2=-1.0)
+    s2 = demo.controls["beta2"]
+    assert s2.min <= -10 and s2.value == -1.0 == demo.state.params["beta2"]
+    np.testing.assert_allclose(demo.state.report.betas[:2], [1.0, -1.0], atol=1e-9)
+    # β2 = -2 β1 (1 + β1) = -4 at β1 = 1: γ undefined, T at infinity -- the stitch is still G2
+    s2.value = -4.0
+    assert demo.state.report.g_order >= 2 and "⚠" not in demo.warning.value
+    T_label = next(a for a in demo.view.ax.texts if a.get_text() == "$T$")
+    assert not T_label.get_visible()
+    s2.value = 2.0
+    assert T_label.get_visible()
+
+
+@pytest.mark.parametrize(
+    ("factory", "kwargs", "match"),
+    [
+        (beta_spline_demo, {"beta2": -1.0}, r"beta2 must lie in \[0, 50\]"),
+        (beta_spline_demo, {"beta2": [0.0, 0.0, 60.0, 0.0]}, "got 60 at joint 2"),
+        (beta_spline_demo, {"beta1": 30.0, "degree": 2}, r"beta1 must lie in \[0.05, 20\]"),
+        (catmull_rom_demo, {"beta1": 0.01}, "beta1 must lie in"),
+        (g2_stitch_demo, {"beta2": 60.0}, r"beta2 must lie in \[-10, 50\]"),
+        (g2_stitch_demo, {"beta2": -11.0}, r"beta2 must lie in \[-10, 50\]"),
+        (reparametrization_demo, {"a": 0.95}, r"a must lie in \[-0.9, 0.9\]"),
+    ],
+)
+@pytest.mark.parametrize("static", [True, False])
+def test_initial_values_outside_the_slider_range_are_rejected(factory, kwargs, match, static):
+    with pytest.raises(ValueError, match=match):
+        factory(static=static, **kwargs)
+
+
+def test_slider_range_ends_are_reachable():
+    demo = beta_spline_demo(beta1=0.05, beta2=50.0)
+    assert demo.controls["beta1"].value == 0.05 and demo.controls["beta2"].value == 50.0
+    assert beta_spline_demo(beta1=20.0).controls["beta1"].value == 20.0
+
+
+def test_state_rejects_an_initial_t_outside_the_domain():
+    with pytest.raises(ValueError, match=r"t must lie in the curve's domain \[0, 1\]"):
+        CurveDemoState(lambda P, p: PiecewiseBezier([P]), [[0, 0], [1, 1], [2, 0]], t=1.5)
+
+
+def test_interactive_canvas_fits_a_jupyterlab_column():
+    # JupyterLab 4.6 at 1400 px with the file browser open: 968 px of output width
+    for demo in (curvature_comb_demo(), reparametrization_demo()):
+        fig = demo.figure
+        assert fig.get_size_inches()[0] * fig.dpi <= 900
+    static = curvature_comb_demo(static=True).figure
+    assert static.dpi == 100  # saved and static pictures keep their resolution
+
+
+def test_moving_t_does_not_recompute_the_curve_pictures(monkeypatch):
+    demo = curvature_comb_demo(static=True)
+    view, st = demo.view, demo.state
+    calls = []
+    for name in ("comb", "profile", "curve_artists"):
+        art = getattr(view, name)
+        monkeypatch.setattr(
+            art,
+            "update",
+            lambda *a, _n=name, _f=art.update, **k: (calls.append(_n), _f(*a, **k))[1],
+        )
+    st.set_t(0.4)
+    st.select_joint(0)
+    assert calls == []
+    np.testing.assert_allclose(
+        np.column_stack(view.frame.point.get_data())[0], st.curve.evaluate(0.4)
+    )
+    st.set_flag("show_comb", False)
+    st.drag(5, 6.0, 1.2)  # new curve while the comb is hidden
+    assert sorted(calls) == ["curve_artists", "profile"]
+    st.set_flag("show_comb", True)  # shown again: recomputed for the new curve
+    teeth = view.comb.tooth_array()
+    from course_lib.differential_geometry import curvature_vector
+    from course_lib.plotting._sampling import segment_grid
+
+    t = segment_grid(st.curve, view.comb.per_segment).ravel()
+    K = curvature_vector(st.curve, t[1:-1])  # interior samples (joints are one-sided)
+    tooth = teeth[1:-1, 1] - teeth[1:-1, 0]
+    np.testing.assert_allclose(tooth, -view.comb.scale * K, rtol=1e-8, atol=1e-9)
+
+
+def test_degenerate_drag_keeps_warning_while_t_moves():
+    demo = curvature_comb_demo(static=True)
+    demo.state.drag(4, 4.0, 1.0)  # W1 onto W0: not regular, comb hidden with a warning
+    assert "not regular" in demo.state.warning
+    demo.state.set_t(0.7)  # same curve: the remembered problem is reported again
+    assert "not regular" in demo.state.warning
+    assert not any(a.get_visible() for a in demo.view.comb.artists)
