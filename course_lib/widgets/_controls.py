@@ -56,6 +56,27 @@ def _slider(spec: SliderSpec, value: float):
     return s
 
 
+def _rounding_only(spec: SliderSpec, st: CurveDemoState, new: float, joint: int | None) -> bool:
+    """True if ``new`` is within half a slider step of every value it would replace.
+
+    The browser's slider only shows positions on its step grid (``min + k * step``; for
+    a log slider, of the exponent): it snaps a value off the grid, e.g. an initial
+    β1 = 1.5 to 10**0.18 = 1.5136, and sends the snapped value back.  That is not a
+    move of the user (a move goes at least one step from the shown position, so more
+    than half a step from the state's value), and must not change the state.
+    """
+    cur = np.atleast_1d(np.asarray(st.params[spec.name], dtype=float))
+    if joint is not None and cur.size > 1:
+        cur = cur[st.joint_of_param(spec.name, joint) : st.joint_of_param(spec.name, joint) + 1]
+    if spec.log:
+        if new <= 0 or np.any(cur <= 0):
+            return False
+        gap = np.abs(np.log10(cur) - np.log10(new))
+    else:
+        gap = np.abs(cur - new)
+    return bool(np.all(gap < 0.5 * spec.step))
+
+
 def assemble_curve_demo(
     demo: Demo,
     sliders: Sequence[SliderSpec] = (),
@@ -97,6 +118,8 @@ def assemble_curve_demo(
         def on_value(change, spec=spec):
             same = demo.controls.get("same")
             j = None if (same is None or same.value or not spec.per_joint) else st.joint
+            if _rounding_only(spec, st, change["new"], j):
+                return
             st.set_param(spec.name, change["new"], joint=j)
 
         s.observe(demo.guard(on_value), names="value")
@@ -142,6 +165,8 @@ def assemble_curve_demo(
             demo._sync(lambda: knot_bounds(change["new"]))
 
         def on_knot(change):
+            if abs(change["new"] - st.params["knots"][ksel.value]) < 0.5 * kval.step:
+                return  # the browser snapped the knot to its slider grid (see _rounding_only)
             st.set_param("knots", change["new"], joint=ksel.value)
 
         ksel.observe(demo.guard(on_knot_select), names="value")

@@ -477,3 +477,20 @@ def test_degenerate_drag_keeps_warning_while_t_moves():
     demo.state.set_t(0.7)  # same curve: the remembered problem is reported again
     assert "not regular" in demo.state.warning
     assert not any(a.get_visible() for a in demo.view.comb.artists)
+
+
+def test_the_browsers_rounding_to_the_slider_grid_leaves_the_state_alone():
+    """Measured in JupyterLab (headless Chromium): an initial β1 = 1.5 is shown at the log
+    slider's nearest position 10**0.18 = 1.5136, and that value comes back to the kernel."""
+    demo = g2_stitch_demo(beta1=1.5, beta2=1.23)
+    s1, s2 = demo.controls["beta1"], demo.controls["beta2"]
+    s1.value = 10**0.18  # what the browser sends back
+    s2.value = 1.2  # β2 grid: -10 + k * 0.1
+    assert demo.state.params["beta1"] == 1.5 and demo.state.params["beta2"] == 1.23
+    np.testing.assert_allclose(demo.state.report.betas[:2], [1.5, 1.23], rtol=1e-9)
+    s1.value = 10**0.17  # one step to the left of the shown position: a real move
+    s2.value = 1.1
+    assert demo.state.params["beta1"] == 10**0.17 and demo.state.params["beta2"] == 1.1
+    kd = knot_spline_demo(knots=[0.0, 1.234, 2.0, 3.0])
+    kd.controls["knot"].value = kd.controls["knot"].value + 0.4 * kd.controls["knot"].step
+    np.testing.assert_array_equal(kd.state.params["knots"], [0.0, 1.234, 2.0, 3.0])
