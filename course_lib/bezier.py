@@ -90,14 +90,15 @@ def bernstein(d: int, u: float | np.ndarray) -> np.ndarray:
 
 
 def _derivative_points(P: np.ndarray, k: int) -> np.ndarray:
-    """k-th hodograph control points without checks."""
-    d = P.shape[0] - 1
+    """k-th hodograph control points without checks.
+
+    ``P`` has shape ``(d + 1, dim)`` or, for several polygons of one degree at once,
+    ``(S, d + 1, dim)``; the result keeps the leading axes.
+    """
+    d = P.shape[-2] - 1
     if k > d:
-        return np.zeros((1, P.shape[1]))
-    Q = P
-    for _ in range(k):
-        Q = np.diff(Q, axis=0)
-    return (factorial(d) / factorial(d - k)) * Q
+        return np.zeros((*P.shape[:-2], 1, P.shape[-1]))
+    return (factorial(d) / factorial(d - k)) * np.diff(P, n=k, axis=-2) if k else P
 
 
 def derivative_control_points(control_points: np.ndarray, k: int = 1) -> np.ndarray:

@@ -44,10 +44,12 @@ __all__ = [
     "CurveFromCurvature",
     "arc_length",
     "arc_length_derivatives",
+    "check_regular",
     "cumulative_arc_length",
     "curvature",
     "curvature_vector",
     "curve_from_curvature",
+    "frame_from_derivatives",
     "osculating_circle",
     "parameter_at_arc_length",
     "point_at_arc_length",
@@ -76,25 +78,57 @@ def _params(curve: object, t: object) -> tuple[np.ndarray, bool]:
 
 
 def _typical_speed(curve) -> float:
-    """Bounding-box diagonal of 17 sample points divided by the domain length."""
+    """A speed scale of the curve: the diagonal of its bounding box over the domain length.
+
+    For a Bézier curve the box of the control points is used (it contains the curve);
+    otherwise the box of 17 sample points.
+    """
     a, b = curve.domain
-    pts = curve.evaluate(np.linspace(a, b, 17))
+    segments = getattr(curve, "segments", None)
+    pts = np.vstack(segments) if segments is not None else curve.evaluate(np.linspace(a, b, 17))
     diag = float(np.linalg.norm(pts.max(axis=0) - pts.min(axis=0)))
     return diag / (b - a) if diag > 0 else 1.0
 
 
-def _check_regular(curve, tt: np.ndarray, d1: np.ndarray) -> np.ndarray:
-    """Speeds ``|c'|``; raise if some is ~0 relative to the curve's typical speed."""
-    v = np.linalg.norm(d1, axis=-1)
-    threshold = REGULARITY_RTOL * _typical_speed(curve)
-    if np.any(v <= threshold):
-        bad = float(tt[np.argmax(v <= threshold)])
+def check_regular(curve, t: np.ndarray, d1: np.ndarray) -> np.ndarray:
+    """Speeds ``|c'|`` of first derivatives ``d1`` (shape ``(..., dim)``) taken at ``t``.
+
+    Raises
+    ------
+    ValueError
+        Where ``|c'|`` vanishes relative to the curve's typical speed
+        (``REGULARITY_RTOL``): the unit tangent and curvature are undefined there.
+        ``t`` has the leading shape of ``d1`` (or is a callable returning it, called only
+        to name the place in the message).
+    """
+    v = np.sqrt(np.einsum("...d,...d->...", d1, d1))
+    bad = v <= REGULARITY_RTOL * _typical_speed(curve)
+    if np.any(bad):
+        i = np.unravel_index(int(np.argmax(bad)), bad.shape)
+        tt = np.asarray(t() if callable(t) else t, dtype=float)
         raise ValueError(
-            f"the parametrization is not regular at t={bad:.12g}: the first derivative "
-            f"vanishes (|c'(t)| = {float(v[np.argmax(v <= threshold)]):.3g}), so the unit "
-            "tangent and curvature are undefined there"
+            f"the parametrization is not regular at t={float(tt[i]):.12g}: the first derivative "
+            f"vanishes (|c'(t)| = {float(v[i]):.3g}), so the unit tangent and curvature are "
+            "undefined there"
         )
     return v
+
+
+def frame_from_derivatives(d1: np.ndarray, d2: np.ndarray, speed: np.ndarray | None = None):
+    """Unit tangent ``T = c'/|c'|`` and curvature vector ``K = (c'' - (c''.T) T)/|c'|^2``.
+
+    The formulas of seed 004 §19.2 applied to derivative vectors already computed, of any
+    shape ``(..., dim)`` (no regularity check: see :func:`check_regular`).  Every tangent
+    and curvature of the course goes through this function.
+
+    Returns
+    -------
+    T, K : ndarray, each of the shape of ``d1``
+    """
+    v = np.sqrt(np.einsum("...d,...d->...", d1, d1)) if speed is None else speed
+    T = d1 / v[..., None]
+    K = (d2 - np.einsum("...d,...d->...", d2, T)[..., None] * T) / (v * v)[..., None]
+    return T, K
 
 
 def breakpoints(curve) -> np.ndarray:
@@ -179,7 +213,7 @@ def unit_tangent(curve, t: float | np.ndarray) -> np.ndarray:
     curve = as_parametrization(curve)
     tt, scalar = _params(curve, t)
     d1 = curve.evaluate(tt, 1)
-    v = _check_regular(curve, tt, d1)
+    v = check_regular(curve, tt, d1)
     T = d1 / v[:, None]
     return T[0] if scalar else T
 
@@ -213,9 +247,7 @@ def curvature_vector(curve, t: float | np.ndarray) -> np.ndarray:
     tt, scalar = _params(curve, t)
     d1 = curve.evaluate(tt, 1)
     d2 = curve.evaluate(tt, 2)
-    v = _check_regular(curve, tt, d1)
-    T = d1 / v[:, None]
-    K = (d2 - np.sum(d2 * T, axis=-1)[:, None] * T) / (v * v)[:, None]
+    _, K = frame_from_derivatives(d1, d2, check_regular(curve, tt, d1))
     return K[0] if scalar else K
 
 
@@ -230,7 +262,7 @@ def signed_curvature(curve, t: float | np.ndarray) -> float | np.ndarray:
     tt, scalar = _params(curve, t)
     d1 = curve.evaluate(tt, 1)
     d2 = curve.evaluate(tt, 2)
-    v = _check_regular(curve, tt, d1)
+    v = check_regular(curve, tt, d1)
     k = (d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0]) / v**3
     return float(k[0]) if scalar else k
 
@@ -400,7 +432,7 @@ def arc_length_derivatives(curve, t: float | np.ndarray, n: int) -> np.ndarray:
     n = check_integer(n, "n", minimum=1)
     tt, scalar = _params(curve, t)
     d = np.stack([curve.evaluate(tt, k) for k in range(n + 1)])  # (n+1, m, dim)
-    v = _check_regular(curve, tt, d[1])
+    v = check_regular(curve, tt, d[1])
     out = _arc_length_derivatives_from(d, v, n)
     return out[:, 0] if scalar else out
 

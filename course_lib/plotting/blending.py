@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .._validation import check_integer
-from ._sampling import segment_samples
+from ..sampling import segment_samples
 from .style import OKABE_ITO, SIZES
 
 __all__ = ["BlendingArtists", "blending_functions", "plot_blending_functions"]

@@ -13,7 +13,7 @@ import numpy as np
 
 from .. import differential_geometry as dg
 from .._validation import check_integer
-from ._sampling import (
+from ..sampling import (
     segment_arc_lengths,
     segment_derivatives,
     segment_grid,
@@ -50,7 +50,7 @@ def comb_teeth(curve, per_segment: int, scale: float, side: int = -1):
 def _frame_samples(curve, per_segment: int):
     """Points, unit tangents ``T`` and curvature vectors ``K = dT/ds`` on the segment grid,
     each ``(S, n, dim)``, from one pass over the derivatives (cached Bernstein matrices,
-    :func:`~course_lib.plotting._sampling.segment_derivatives`).
+    :func:`~course_lib.sampling.segment_derivatives`).
 
     Raises
     ------
@@ -198,7 +198,7 @@ def curvature_profile(
 
     ``arc_length_every = k > 1`` computes the arc length (the costly part) at every k-th
     sample and at both ends of every segment (fixed Gauss-Legendre sums with cached
-    Bernstein matrices, :func:`~course_lib.plotting._sampling.segment_arc_lengths`), and
+    Bernstein matrices, :func:`~course_lib.sampling.segment_arc_lengths`), and
     linearly in the parameter between them -- for live widgets; the joints stay exact.
     """
     if x not in ("arc_length", "parameter"):

@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .._validation import as_points
-from ._sampling import segment_samples
+from ..sampling import segment_samples
 from .style import ROLE_COLORS, SIZES, segment_color
 
 __all__ = [

@@ -16,7 +16,7 @@ import numpy as np
 from .. import differential_geometry as dg
 from .._validation import as_parameter_array, as_points, check_integer, check_positive
 from ..parametrization import as_parametrization, check_in_domain
-from ._sampling import point_derivatives, tangent_and_curvature
+from ..sampling import point_derivatives, tangent_and_curvature
 from .style import ROLE_COLORS, SIZES
 
 __all__ = [

@@ -232,3 +232,26 @@ LINE = PiecewiseBezier([np.array([[0.0, 0.0], [1.0, 1.0]])])
 def test_bad_input(call, exc, match):
     with np.errstate(all="ignore"), pytest.raises(exc, match=match):
         call()
+
+
+def test_frame_from_derivatives_on_a_circle_of_radius_2():
+    # c(t) = 2 (cos t, sin t): c' = 2 (-sin, cos), c'' = -2 (cos, sin); T = (-sin, cos), K = -(cos, sin)/2
+    t = np.linspace(0.0, 6.0, 7)
+    d1 = 2 * np.stack([-np.sin(t), np.cos(t)], axis=-1)
+    d2 = -2 * np.stack([np.cos(t), np.sin(t)], axis=-1)
+    T, K = dg.frame_from_derivatives(d1.reshape(7, 1, 2), d2.reshape(7, 1, 2))  # any leading shape
+    np.testing.assert_allclose(T[:, 0], np.stack([-np.sin(t), np.cos(t)], axis=-1), atol=1e-15)
+    np.testing.assert_allclose(
+        K[:, 0], -0.5 * np.stack([np.cos(t), np.sin(t)], axis=-1), atol=1e-15
+    )
+
+
+def test_check_regular_names_the_parameter_of_a_cusp():
+    cusp = PiecewiseBezier([[[0.0, 0.0], [1.0, 1.0], [0.0, 1.0], [1.0, 0.0]]])  # c'(1/2) = 0
+    t = np.array([[0.25, 0.5]])
+    d1 = cusp.evaluate(t.ravel(), 1).reshape(1, 2, 2)
+    with pytest.raises(ValueError, match=r"not regular at t=0\.5"):
+        dg.check_regular(cusp, t, d1)
+    np.testing.assert_allclose(
+        dg.check_regular(cusp, t[:, :1], d1[:, :1]), [[np.linalg.norm(d1[0, 0])]]
+    )

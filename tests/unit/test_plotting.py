@@ -549,8 +549,8 @@ def test_cached_bernstein_samples_agree_with_the_math_layer():
     differential_geometry, evaluated independently: inside the segments through the
     global parameter, at the segment ends through each segment on its own."""
     from course_lib import differential_geometry as dg
-    from course_lib.plotting._sampling import segment_derivatives, segment_grid
     from course_lib.plotting.curvature import _frame_samples
+    from course_lib.sampling import segment_derivatives, segment_grid
 
     n = 9
     P, T, K = _frame_samples(KNOTTED, n)
@@ -575,7 +575,7 @@ def test_cached_bernstein_samples_agree_with_the_math_layer():
 
 
 def test_fast_arc_lengths_against_scipy_quadrature():
-    from course_lib.plotting._sampling import segment_arc_lengths
+    from course_lib.sampling import segment_arc_lengths
 
     n, idx = 16, np.array([0, 3, 6, 9, 12, 15])
     S = segment_arc_lengths(KNOTTED, n, idx)

@@ -462,7 +462,7 @@ def test_moving_t_does_not_recompute_the_curve_pictures(monkeypatch):
     st.set_flag("show_comb", True)  # shown again: recomputed for the new curve
     teeth = view.comb.tooth_array()
     from course_lib.differential_geometry import curvature_vector
-    from course_lib.plotting._sampling import segment_grid
+    from course_lib.sampling import segment_grid
 
     t = segment_grid(st.curve, view.comb.per_segment).ravel()
     K = curvature_vector(st.curve, t[1:-1])  # interior samples (joints are one-sided)

@@ -1,13 +1,21 @@
-"""Parameter grids for drawing: each segment sampled on its own, joints from both sides."""
+"""Sampling a curve for pictures: each segment on its own grid, joints from both sides.
+
+A math module (it knows nothing of matplotlib): the plotting and widget layers draw what it
+returns.  For a PiecewiseBezier whose segments share one degree, every frame of a widget
+samples the same local parameters, so the Bernstein matrices of the grid are constant and
+cached here; derivatives use the hodograph control points of :mod:`course_lib.bezier`, and
+tangents and curvature vectors the formulas of :mod:`course_lib.differential_geometry`.
+"""
 
 from __future__ import annotations
 
 from functools import lru_cache
-from math import factorial
 
 import numpy as np
 
-from .._validation import check_integer
+from . import differential_geometry as dg
+from ._validation import check_integer
+from .bezier import _derivative_points
 
 #: The last sample of a segment is taken this fraction of the segment before its end,
 #: so that global evaluation (which gives a joint to the segment that *starts* there)
@@ -44,7 +52,7 @@ def segment_samples(curve, per_segment: int) -> tuple[np.ndarray, np.ndarray]:
 def _local_bernstein(degree: int, per_segment: int) -> np.ndarray:
     """Bernstein matrix ``B[j, r] = B_r^degree(u_j)`` of the fixed local grid
     ``u = linspace(0, 1, per_segment)`` (the same for every segment and every frame)."""
-    from ..bezier import bernstein
+    from .bezier import bernstein
 
     B = np.array(bernstein(degree, np.linspace(0.0, 1.0, per_segment)), dtype=float)
     B.setflags(write=False)
@@ -79,8 +87,7 @@ def segment_derivatives(curve, per_segment: int, orders=(0,)) -> list[np.ndarray
         if k > d:
             out.append(np.zeros((V.shape[0], per_segment, V.shape[2])))
             continue
-        Q = np.diff(V, n=k, axis=1) * float(factorial(d) // factorial(d - k)) if k else V
-        D = np.matmul(_local_bernstein(d - k, per_segment), Q)  # (S, n, dim)
+        D = np.matmul(_local_bernstein(d - k, per_segment), _derivative_points(V, k))  # (S, n, dim)
         if k:
             D *= (h ** -float(k))[:, None, None]  # d/dt = (1/h_i) d/du on segment i
         out.append(D)
@@ -103,7 +110,7 @@ def point_derivatives(curve, t: np.ndarray, orders=(0,)) -> list[np.ndarray]:
     t = np.asarray(t, dtype=float).ravel()
     if not _single_degree(curve):
         return [np.atleast_2d(curve.evaluate(t, k)) for k in orders]
-    from ..bezier import bernstein
+    from .bezier import bernstein
 
     idx, u = curve.locate(t)
     d = curve.degrees[0]
@@ -114,9 +121,8 @@ def point_derivatives(curve, t: np.ndarray, orders=(0,)) -> list[np.ndarray]:
         if k > d:
             out.append(np.zeros((t.size, V.shape[2])))
             continue
-        Q = np.diff(V, n=k, axis=1) * float(factorial(d) // factorial(d - k)) if k else V
         B = np.atleast_2d(bernstein(d - k, u))  # (m, d - k + 1)
-        D = np.einsum("mr,mrd->md", B, Q)
+        D = np.einsum("mr,mrd->md", B, _derivative_points(V, k))
         if k:
             D *= (h ** -float(k))[:, None]
         out.append(D)
@@ -137,35 +143,14 @@ def tangent_and_curvature(
         :mod:`course_lib.differential_geometry`); ``t`` (same leading shape as the
         derivatives, or a callable returning it) names the place.
     """
-    from .. import differential_geometry as dg
-
-    v = np.sqrt(np.einsum("...d,...d->...", d1, d1))
-    a, b = curve.domain
-    if hasattr(curve, "segments"):
-        P = np.vstack(curve.segments)
-        diag = float(np.linalg.norm(P.max(axis=0) - P.min(axis=0)))
-        typical = diag / (b - a) if diag > 0 else 1.0
-    else:
-        typical = dg._typical_speed(curve)
-    bad = v <= dg.REGULARITY_RTOL * typical
-    if np.any(bad):
-        t = t() if callable(t) else t
-        i = np.unravel_index(int(np.argmax(bad)), bad.shape)
-        raise ValueError(
-            f"the parametrization is not regular at t={float(np.asarray(t)[i]):.12g}: the "
-            f"first derivative vanishes (|c'(t)| = {float(v[i]):.3g}), so the unit tangent "
-            "and curvature are undefined there"
-        )
-    T = d1 / v[..., None]
-    K = (d2 - np.einsum("...d,...d->...", d2, T)[..., None] * T) / (v * v)[..., None]
-    return T, K
+    return dg.frame_from_derivatives(d1, d2, dg.check_regular(curve, t, d1))
 
 
 @lru_cache(maxsize=32)
 def _gauss_bernstein(degree: int, breaks: tuple, order: int) -> tuple[np.ndarray, np.ndarray]:
     """Bernstein matrix at the Gauss-Legendre nodes of every ``[breaks[j], breaks[j+1]]``
     and the matching weights (``half-length * w``), both flattened interval by interval."""
-    from ..bezier import bernstein
+    from .bezier import bernstein
 
     x, w = np.polynomial.legendre.leggauss(order)
     br = np.asarray(breaks)
@@ -195,7 +180,7 @@ def segment_arc_lengths(curve, per_segment: int, idx: np.ndarray, order: int = 1
     d = curve.degrees[0]
     u = np.linspace(0.0, 1.0, per_segment)[np.asarray(idx)]
     B, W = _gauss_bernstein(d - 1, tuple(u.tolist()), order)
-    Q = np.diff(np.stack(curve.segments), axis=1) * float(d)  # hodograph points (S, d, dim)
+    Q = _derivative_points(np.stack(curve.segments), 1)  # hodograph points (S, d, dim)
     speed = np.linalg.norm(np.matmul(B, Q), axis=-1)  # (S, J * order)
     pieces = (speed * W).reshape(speed.shape[0], -1, order).sum(axis=-1)  # (S, J)
     within = np.concatenate([np.zeros((pieces.shape[0], 1)), np.cumsum(pieces, axis=1)], axis=1)
