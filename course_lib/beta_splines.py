@@ -139,6 +139,21 @@ def _cubic_polygons_from(W1: np.ndarray, W2: np.ndarray, J: np.ndarray) -> np.nd
     return out
 
 
+def _cubic_curve(W1, W2, J, b1, b2, g, joints: slice) -> PiecewiseBezier:
+    """The cubic Beta-spline from its interior and junction vertices, with the shape
+    parameters per site (``b1``, ``b2``, ``g``) and, in ``info``, per joint (``joints``)."""
+    info = {
+        "beta1": b1[joints].copy(),
+        "beta2": b2[joints].copy(),
+        "beta1_vertices": b1,
+        "beta2_vertices": b2,
+        "gamma": g,
+        "junction_points": J,
+        "interior_points": np.stack([W1, W2], axis=1),
+    }
+    return PiecewiseBezier._fast(list(_cubic_polygons_from(W1, W2, J)), info=info)
+
+
 def _check_joint_tangents(A: np.ndarray, B: np.ndarray, P: np.ndarray, where, what: str):
     """Raise if A_k = B_k (zero tangent at a junction); ``where(k)`` names the place."""
     scale = max(float(np.max(np.abs(P))), 1.0)
@@ -227,17 +242,7 @@ def cubic_beta_spline(
     b2 = _per_site(beta2, "beta2", m + 1, m - 3, "control vertex", 0.0, False)
     W1, W2, J, g = _cubic_points(P, b1, b2)
     _check_joint_tangents(W2[:-1], W1[1:], P, lambda k: f"vertex V_{k + 1}", "W_(j-1),2 = W_j,1")
-    segs = _cubic_polygons_from(W1, W2, J)
-    info = {
-        "beta1": b1[2:-2].copy(),
-        "beta2": b2[2:-2].copy(),
-        "beta1_vertices": b1,
-        "beta2_vertices": b2,
-        "gamma": g,
-        "junction_points": J,
-        "interior_points": np.stack([W1, W2], axis=1),
-    }
-    return PiecewiseBezier._fast(list(segs), info=info)
+    return _cubic_curve(W1, W2, J, b1, b2, g, slice(2, -2))
 
 
 # ------------------------------------------------------------------ bases
@@ -371,14 +376,4 @@ def design_beta_spline(V: np.ndarray, interior: np.ndarray) -> PiecewiseBezier:
     W1, W2 = Wi[:, 0], Wi[:, 1]
     bj = b1[:, None]
     J = (bj * W2[:-1] + W1[1:]) / (1 + bj)
-    segs = _cubic_polygons_from(W1, W2, J)
-    info = {
-        "beta1": b1[1:-1].copy(),
-        "beta2": b2[1:-1].copy(),
-        "beta1_vertices": b1,
-        "beta2_vertices": b2,
-        "gamma": g,
-        "junction_points": J,
-        "interior_points": Wi,
-    }
-    return PiecewiseBezier._fast(list(segs), info=info)
+    return _cubic_curve(W1, W2, J, b1, b2, g, slice(1, -1))

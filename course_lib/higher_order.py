@@ -92,9 +92,16 @@ def _solve(n: int, betas: tuple[float, ...], seed_eq_2_10: bool = False) -> np.n
                 A[:, k * N : (k + 1) * N] -= M @ E1
         rows.append(A)
     A = np.vstack(rows)
+    # Equilibrate the rows: the constraint of order i carries powers up to β1^i, so without
+    # this the singular values spread over many decades for large or small β1.
+    norms = np.linalg.norm(A, axis=1)
+    A = A / np.where(norms > 0, norms, 1.0)[:, None]
+    # A has one more column than rows ((n+2)^2 unknowns, (n+3)(n+1) equations), so it
+    # always has a null vector; the basis is unique when the null space is exactly one
+    # vector, i.e. when all (n+3)(n+1) singular values are nonzero.
     _, s, Vt = np.linalg.svd(A)
     tol = 1e-10 * s[0]
-    if s[-2] <= tol:
+    if s[-1] <= tol:
         raise ValueError(
             f"the shape parameters betas = {betas} admit more than one G^{n} basis of "
             f"degree {d} (singular system); choose other values"

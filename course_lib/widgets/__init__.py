@@ -7,7 +7,8 @@ Every demo keeps its state in one object (``demo.state``) that tests and noteboo
 drive without a browser, updates its figure in place, and falls back to a static
 figure when widgets are unavailable (or with ``static=True``).  Widgets carry the CSS
 classes of CONTRIBUTING.md (``cl-demo``, ``cl-slider-beta1``, ``cl-slider-beta2``,
-``cl-slider-t``, ``cl-slider-knot``, ``cl-report``, ``cl-canvas``, ``cl-warning``).
+``cl-slider-beta3``, ``cl-slider-t``, ``cl-slider-knot``, ``cl-report``, ``cl-canvas``,
+``cl-warning``).
 
 Lecture mode (a projector, no code on screen): Voilà renders a notebook's outputs
 with live widgets, e.g. ``.venv/bin/voila notebooks/04_beta_splines.ipynb`` (add
@@ -25,6 +26,7 @@ from .demos import (
     curvature_comb_demo,
     g2_stitch_demo,
     knot_spline_demo,
+    quartic_beta_spline_demo,
     reparametrization_demo,
 )
 from .interactor import PointDragger
@@ -43,5 +45,6 @@ __all__ = [
     "g2_stitch_demo",
     "joint_report",
     "knot_spline_demo",
+    "quartic_beta_spline_demo",
     "reparametrization_demo",
 ]

@@ -290,6 +290,28 @@ class CurveDemoState:
 CANVAS_WIDTH_PX = 880
 
 
+def _ipympl_canvas_classes():
+    """ipympl's Canvas and FigureManager, imported without changing pyplot's backend.
+
+    Importing ipympl switches matplotlib to the ipympl backend when matplotlib is already
+    loaded; a demo must not turn every later ``new_figure`` of the notebook into a widget,
+    so the backend in use before (inline, in a plain notebook) is put back.
+    """
+    import sys
+
+    import matplotlib
+
+    from ..plotting.style import resolve_pyplot_backend
+
+    resolve_pyplot_backend()
+    before = matplotlib.get_backend() if "matplotlib.pyplot" in sys.modules else None
+    from ipympl.backend_nbagg import Canvas, FigureManager
+
+    if before is not None and matplotlib.get_backend() != before:
+        matplotlib.use(before)
+    return Canvas, FigureManager
+
+
 def make_figure(figsize: tuple[float, float], static: bool):
     """A bare Figure on an Agg canvas (``static``, 100 dpi) or on an ipympl canvas widget
     (``CANVAS_WIDTH_PX`` wide: the dpi is chosen for it, the layout stays the same)."""
@@ -307,8 +329,7 @@ def make_figure(figsize: tuple[float, float], static: bool):
     else:
         import warnings
 
-        from ipympl.backend_nbagg import Canvas, FigureManager
-
+        Canvas, FigureManager = _ipympl_canvas_classes()
         canvas = Canvas(fig)
         with warnings.catch_warnings():
             # ipympl 0.10's Toolbar passes an argument traitlets deprecates; harmless
@@ -619,12 +640,10 @@ class CurveDemoView:
 
 # ----------------------------------------------------------------------- widgets
 def _widgets_available() -> bool:
-    try:
-        import ipympl  # noqa: F401
-        import ipywidgets  # noqa: F401
-    except ImportError:
-        return False
-    return True
+    # find_spec, not import: importing ipympl would switch pyplot's backend
+    from importlib.util import find_spec
+
+    return find_spec("ipympl") is not None and find_spec("ipywidgets") is not None
 
 
 class Demo:

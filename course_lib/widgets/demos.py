@@ -32,11 +32,14 @@ __all__ = [
     "BETA1",
     "BETA2",
     "BETA2_STITCH",
+    "QUARTIC_BETA2",
+    "QUARTIC_BETA3",
     "beta_spline_demo",
     "catmull_rom_demo",
     "curvature_comb_demo",
     "g2_stitch_demo",
     "knot_spline_demo",
+    "quartic_beta_spline_demo",
     "reparametrization_demo",
 ]
 
@@ -50,6 +53,15 @@ BETA2 = SliderSpec("beta2", "β₂", 0.0, 50.0, 0.1, "cl-slider-beta2")
 #: β2 slider of the stitching demo: -10 .. 50.  G2 stitching is defined for every real β2
 #: (seed 000 eq. (11)); only Farin-Boehm's point T needs γ, which the diagram then hides.
 BETA2_STITCH = SliderSpec("beta2", "β₂", -10.0, 50.0, 0.1, "cl-slider-beta2", per_joint=False)
+#: β2 slider of the quartic G3 Beta-spline: 0 .. 100, global (seed 001 Fig. 5 goes up to
+#: β2 = 100).  With β3 = 0 and β2 >= 0 every blending weight is positive (convex hull); for
+#: β2 < 0 the basis breaks down already at β1 = 1, β2 = -4, β3 = 0 (the normalizing
+#: denominator sum_k b_k(0) of the unnormalized weights vanishes there).
+QUARTIC_BETA2 = replace(BETA2, max=100.0, per_joint=False)
+#: β3 slider of the quartic G3 Beta-spline: -50 .. 50, global.  Any real β3 is a valid
+#: shape parameter; for β1 != 1 and |β3| large the weights may leave [0, 1] or, near a
+#: singular configuration, grow large (the curve then leaves the picture).
+QUARTIC_BETA3 = SliderSpec("beta3", "β₃", -50.0, 50.0, 0.1, "cl-slider-beta3", per_joint=False)
 
 
 def _static(static: bool | None) -> bool:
@@ -256,6 +268,59 @@ def beta_spline_demo(
         design_labels="$V_{{{i}}}$",
         extras=[_junction_marks],
         title=f"{'quadratic G1' if degree == 2 else 'cubic G2'} Beta-spline",
+    )
+
+
+#: Default control polygon of the quartic demo: the polygon of seed 001 Fig. 5 as drawn in
+#: notebook 05 (eight vertices, four quartic segments, three joints).
+_QUARTIC_DEFAULT = [[0, 0], [1, 2.4], [3, 3], [4, 0.6], [6, 0.2], [7, 2.6], [9, 3], [10, 0.4]]
+
+
+def quartic_beta_spline_demo(
+    points=None,
+    beta1=1.0,
+    beta2=0.0,
+    beta3=0.0,
+    *,
+    static: bool | None = None,
+) -> Demo:
+    """The quartic G3 Beta-spline of seed 001 Example 2.1 with global β1, β2, β3.
+
+    Sliders β1 (log scale: always > 0), β2 (0 .. 100, the range of seed 001 Fig. 5) and
+    β3 (-50 .. 50), one value for the whole curve; draggable control vertices ``V_i``
+    (each segment blends five of them); comb, κ(s) plot and the report of the selected
+    joint, which reads G3 for every setting (and C1 only when β1 = 1, β2 != 0).  A
+    setting the construction rejects shows a warning and keeps the last valid curve.
+
+    Raises
+    ------
+    TypeError
+        If a shape parameter is not a real number (global values only).
+    ValueError
+        From :func:`course_lib.higher_order.quartic_beta_spline` for bad initial data
+        (β1 <= 0, fewer than 5 points, a basis that is not unique); for an initial value
+        outside its slider's range.
+    """
+    from .._validation import check_finite_scalar
+    from ..higher_order import quartic_beta_spline
+
+    P = as_points(_QUARTIC_DEFAULT if points is None else points, "points", min_points=1, dims=(2,))
+    params = {
+        name: check_finite_scalar(value, name)
+        for name, value in (("beta1", beta1), ("beta2", beta2), ("beta3", beta3))
+    }
+
+    def build(P, params):
+        return quartic_beta_spline(P, params["beta1"], params["beta2"], params["beta3"])
+
+    state = CurveDemoState(build, P, params, min_points=5)  # bad data raises here
+    return _finish(
+        state,
+        static=static,
+        name="quartic Beta-spline",
+        sliders=[replace(BETA1, per_joint=False), QUARTIC_BETA2, QUARTIC_BETA3],
+        design_labels="$V_{{{i}}}$",
+        title="quartic G3 Beta-spline",
     )
 
 

@@ -186,3 +186,28 @@ def test_figure_5_curves_differ_only_through_beta2():
 def test_bad_input(call, match):
     with pytest.raises(ValueError, match=match):
         call()
+
+
+@pytest.mark.parametrize("betas", [(1.0, -4.0, 0.0), (0.5, 0.0, -39.375)])
+def test_singular_quartic_shape_parameters_are_refused(betas):
+    # Independent derivation (sympy, notebook 05's blending equations): the quartic basis is
+    # unique unless δ = 6β1⁶ + 18β1⁵ + 30β1⁴ + 36β1³ + 30β1² + 18β1 + 6
+    #                   + 6(1 + β1)³β2 + 3β1β2² + (1 − β1²)β3 vanishes.
+    # (1, -4, 0): δ = 144 - 192 + 48 = 0;  (1/2, 0, -39.375): δ = 29.53125 - 0.75 * 39.375 = 0.
+    b1, b2, b3 = betas
+    delta = (
+        6 * b1**6
+        + 18 * b1**5
+        + 30 * b1**4
+        + 36 * b1**3
+        + 30 * b1**2
+        + 18 * b1
+        + 6
+        + 6 * (1 + b1) ** 3 * b2
+        + 3 * b1 * b2**2
+        + (1 - b1**2) * b3
+    )
+    assert abs(delta) < 1e-12
+    with pytest.raises(ValueError, match="more than one G\\^3 basis"):
+        gn_beta_spline_basis(3, betas)
+    gn_beta_spline_basis(3, (b1, b2 + 0.5, b3))  # nearby values are fine

@@ -494,3 +494,116 @@ def test_the_browsers_rounding_to_the_slider_grid_leaves_the_state_alone():
     kd = knot_spline_demo(knots=[0.0, 1.234, 2.0, 3.0])
     kd.controls["knot"].value = kd.controls["knot"].value + 0.4 * kd.controls["knot"].step
     np.testing.assert_array_equal(kd.state.params["knots"], [0.0, 1.234, 2.0, 3.0])
+
+
+# ------------------------------------------------- quartic G3 Beta-spline
+from course_lib.widgets import quartic_beta_spline_demo  # noqa: E402
+
+P5 = np.array([[0, 0], [1, 2.4], [3, 3], [4, 0.6], [6, 0.2], [7, 2.6], [9, 3], [10, 0.4]])
+
+
+def test_quartic_demo_beta2_slider_keeps_g3_with_the_measured_betas():
+    demo = quartic_beta_spline_demo()
+    assert CSS | {"cl-slider-beta1", "cl-slider-beta2", "cl-slider-beta3"} <= classes(demo)
+    assert "same" not in demo.controls  # global shape parameters: no per-joint switch
+    assert 10.0 ** demo.controls["beta1"].min > 0  # log slider: β1 can never reach 0
+    st = demo.state
+    before = np.array(st.curve.segments)
+    demo.controls["beta2"].value = 20.0  # as if the slider moved
+    after = np.array(st.curve.segments)
+    assert st.params["beta2"] == 20.0 and np.max(np.abs(after - before)) > 0.1
+    # the continuity analysis measures β = (1, 20, 0) at every joint, independently of the
+    # construction; β1 = 1 and β2 != 0: C1 but not C2 (seed 001 Fig. 5, middle)
+    for j in range(st.n_joints):
+        demo.controls["joint"].value = j
+        rep = st.report
+        assert rep.g_order == 3 and rep.c_order == 1
+        np.testing.assert_allclose(rep.betas[:3], [1.0, 20.0, 0.0], atol=1e-6)
+    assert "G3" in demo.report.value and "β2 = 20" in demo.report.value
+    demo.controls["beta3"].value = -5.0
+    demo.controls["beta1"].value = 2.0
+    np.testing.assert_allclose(st.report.betas[:3], [2.0, 20.0, -5.0], rtol=1e-6, atol=1e-6)
+    assert st.report.g_order == 3 and st.report.c_order == 0 and st.warning == ""
+
+
+def test_quartic_demo_default_is_the_uniform_quartic_b_spline():
+    # at β = (1, 0, 0) a joint is (V_{j+1} + 11 V_{j+2} + 11 V_{j+3} + V_{j+4}) / 24
+    demo = quartic_beta_spline_demo(static=True)
+    jp = demo.state.curve.joint_points
+    ref = (P5[1:4] + 11 * P5[2:5] + 11 * P5[3:6] + P5[4:7]) / 24
+    np.testing.assert_allclose(jp, ref, atol=1e-12)
+    assert demo.state.report.g_order == 3 and demo.state.report.c_order == 3
+
+
+def test_quartic_demo_degenerate_drag_warns_instead_of_raising():
+    # uniform quartic B-spline: the end tangent of segment 0 is (-V1 - 3 V2 + 3 V3 + V4) / 6
+    demo = quartic_beta_spline_demo()
+    demo.state.drag(4, *(P5[1] + 3 * P5[2] - 3 * P5[3]))
+    assert "construction failed" in demo.state.warning and "not be regular" in demo.state.warning
+    assert demo.warning.layout.display != "none" and "⚠" in demo.warning.value
+    demo.state.drag(4, *P5[4])  # back: healthy again
+    assert demo.state.warning == "" and demo.warning.layout.display == "none"
+
+
+def test_quartic_demo_singular_shape_parameters_show_a_warning():
+    # β1 = 1/2, β2 = 0: the normalizing denominator 29.53125 + (1 - β1²) β3 vanishes at
+    # β3 = -39.375 (sympy, notebook 05's blending_equations(3, ...))
+    demo = quartic_beta_spline_demo(beta1=0.5)
+    demo.controls["beta3"].value = -39.375  # must not raise out of the callback
+    assert "⚠" in demo.warning.value and demo.state.params["beta3"] == 0.0
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "match"),
+    [
+        ({"beta1": -1.0}, "beta1 must be > 0"),
+        ({"beta1": 30.0}, r"beta1 must lie in \[0.05, 20\]"),
+        ({"beta2": -1.0}, r"beta2 must lie in \[0, 100\]"),
+        ({"beta2": 120.0}, r"beta2 must lie in \[0, 100\]"),
+        ({"beta3": 60.0}, r"beta3 must lie in \[-50, 50\]"),
+        ({"beta3": float("nan")}, "beta3 must be finite"),
+        ({"points": P5[:4]}, "at least 5"),
+    ],
+)
+@pytest.mark.parametrize("static", [True, False])
+def test_quartic_demo_bad_initial_data(kwargs, match, static):
+    with pytest.raises(ValueError, match=match):
+        quartic_beta_spline_demo(static=static, **kwargs)
+
+
+def test_quartic_demo_rejects_a_per_joint_shape_parameter():
+    with pytest.raises(TypeError, match="beta2 must be a real number"):
+        quartic_beta_spline_demo(beta2=[0.0, 1.0, 2.0], static=True)
+
+
+def test_quartic_demo_static_is_a_figure():
+    demo = quartic_beta_spline_demo(P5 + 1.0, beta2=100.0, static=True)
+    assert demo.widget is None and demo.controls == {}
+    assert type(demo.figure.canvas).__name__ == "FigureCanvasAgg"
+    assert demo._repr_mimebundle_()["image/png"]
+    joints = demo.view.curve_artists.joints
+    before = np.column_stack(joints.get_data())
+    demo.state.set_param("beta3", 10.0)  # the state still drives the static figure
+    drawn = np.column_stack(joints.get_data())
+    np.testing.assert_allclose(drawn, demo.state.curve.joint_points)
+    assert np.max(np.abs(drawn - before)) > 1e-5  # small: β2 = 100 dominates
+    np.testing.assert_allclose(demo.state.report.betas[:3], [1.0, 100.0, 10.0], atol=1e-6)
+
+
+def test_a_demo_does_not_turn_later_figures_into_widgets():
+    """Importing ipympl switches pyplot's backend; a demo must put the inline one back."""
+    nbformat = pytest.importorskip("nbformat")
+    from nbclient import NotebookClient
+
+    cells = [
+        "from course_lib.plotting import new_figure\nfrom course_lib.widgets import beta_spline_demo",
+        "fig, ax = new_figure(); ax.plot([0, 1], [0, 1]);",
+        "beta_spline_demo()",
+        "fig, ax = new_figure(); ax.plot([0, 1], [1, 0]);",
+    ]
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in cells])
+    NotebookClient(nb, timeout=120, kernel_name="python3").execute()
+    kinds = [{k for o in c.outputs for k in o.get("data", {})} for c in nb.cells]
+    assert "application/vnd.jupyter.widget-view+json" in kinds[2]
+    assert "image/png" in kinds[1] and "image/png" in kinds[3]
+    assert "application/vnd.jupyter.widget-view+json" not in kinds[3]
