@@ -146,6 +146,24 @@ def _fmt(x: float | None, name: str) -> str:
 
 
 # ----------------------------------------------------------------- stitching
+def _stitch_parts(V: np.ndarray, W: np.ndarray, labels: bool):
+    """Points, the q/r polygons and the labels shared by the G1 and G2 stitching diagrams."""
+    d = V.shape[0] - 1
+    pts = {f"V{i}": V[i] for i in range(d + 1)}
+    pts.update({f"W{j}": W[j] for j in range(W.shape[0])})
+    lines = {
+        "ray": ((f"V{d - 1}", f"V{d}", "W1"), "aux"),
+        "q": (tuple(f"V{i}" for i in range(d + 1)), "q"),
+        "r": (tuple(f"W{j}" for j in range(W.shape[0])), "r"),
+    }
+    lab = {}
+    if labels:
+        lab = {f"V{i}": f"$V_{{{i}}}$" for i in range(d)}
+        lab[f"V{d}"] = f"$V_{{{d}}} = W_0$"
+        lab.update({f"W{j}": f"$W_{{{j}}}$" for j in range(1, W.shape[0])})
+    return d, pts, lines, lab
+
+
 def plot_g1_stitch(
     ax,
     V,
@@ -174,19 +192,7 @@ def plot_g1_stitch(
     """
     V = as_points(V, "V", min_points=2, dims=(2,))
     W = as_points(W, "W", min_points=2, dims=(2,))
-    d = V.shape[0] - 1
-    pts = {f"V{i}": V[i] for i in range(V.shape[0])}
-    pts.update({f"W{j}": W[j] for j in range(W.shape[0])})
-    lines = {
-        "ray": ((f"V{d - 1}", f"V{d}", "W1"), "aux"),
-        "q": (tuple(f"V{i}" for i in range(d + 1)), "q"),
-        "r": (tuple(f"W{j}" for j in range(W.shape[0])), "r"),
-    }
-    lab = {}
-    if labels:
-        lab = {f"V{i}": f"$V_{{{i}}}$" for i in range(d)}
-        lab[f"V{d}"] = f"$V_{{{d}}} = W_0$"
-        lab.update({f"W{j}": f"$W_{{{j}}}$" for j in range(1, W.shape[0])})
+    d, pts, lines, lab = _stitch_parts(V, W, labels)
     ratios = [
         (f"V{d - 1}", f"V{d}", "1", 1.0),
         ("W0", "W1", "β₁" if beta1 is None else f"β₁ = {beta1:.3g}", 1.0),
@@ -236,22 +242,16 @@ def plot_farin_boehm(
     V = as_points(V, "V", min_points=3, dims=(2,))
     W = as_points(W, "W", min_points=3, dims=(2,))
     T = as_points(np.atleast_2d(np.asarray(T, dtype=float)), "T", min_points=1, dims=(2,))[0]
-    d = V.shape[0] - 1
-    pts = {f"V{i}": V[i] for i in range(d + 1)}
-    pts.update({f"W{j}": W[j] for j in range(W.shape[0])})
+    d, pts, parts, lab = _stitch_parts(V, W, labels)
     pts["T"] = T
     lines = {
         "leg": ((f"V{d - 2}", f"V{d - 1}", "T"), "aux"),
-        "ray": ((f"V{d - 1}", f"V{d}", "W1"), "aux"),
+        "ray": parts["ray"],
         "fan": (("T", "W1", "W2"), "aux"),
-        "q": (tuple(f"V{i}" for i in range(d + 1)), "q"),
-        "r": (tuple(f"W{j}" for j in range(W.shape[0])), "r"),
+        "q": parts["q"],
+        "r": parts["r"],
     }
-    lab = {}
     if labels:
-        lab = {f"V{i}": f"$V_{{{i}}}$" for i in range(d)}
-        lab[f"V{d}"] = f"$V_{{{d}}} = W_0$"
-        lab.update({f"W{j}": f"$W_{{{j}}}$" for j in range(1, W.shape[0])})
         lab["T"] = "$T$"
     g = "γ" if gamma is None else f"γ={gamma:.3g}"
     bg = "β₁²γ" if beta1 is None or gamma is None else f"β₁²γ={beta1**2 * gamma:.3g}"

@@ -226,32 +226,12 @@ def reparametrization_demo(
     demo.name = "reparametrization"
     if static:
         return demo
-    import ipywidgets as w
 
+    from ._controls import _slider
     from .interactor import PointDragger
 
-    sa = w.FloatSlider(
-        value=state.a,
-        min=A_SLIDER.min,
-        max=A_SLIDER.max,
-        step=A_SLIDER.step,
-        description=A_SLIDER.description,
-        continuous_update=True,
-        style={"description_width": "3em"},
-        layout=w.Layout(width="22em"),
-    )
-    sa.add_class(A_SLIDER.css)
-    sv = w.FloatSlider(
-        value=state.v,
-        min=V_SLIDER.min,
-        max=V_SLIDER.max,
-        step=V_SLIDER.step,
-        description=V_SLIDER.description,
-        continuous_update=True,
-        style={"description_width": "3em"},
-        layout=w.Layout(width="22em"),
-    )
-    sv.add_class(V_SLIDER.css)
+    sa = _slider(A_SLIDER, state.a)
+    sv = _slider(V_SLIDER, state.v)
     demo.controls.update(a=sa, t=sv)
     sa.observe(demo.guard(lambda ch: state.set_a(ch["new"])), names="value")
     sv.observe(demo.guard(lambda ch: state.set_t(ch["new"])), names="value")
