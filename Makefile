@@ -1,5 +1,5 @@
 # The course's commands.  On a fresh machine (Python 3.10+):
-#   make lab    create .venv, install the course, open JupyterLab on notebooks/
+#   make lab    create .venv, install the course, open JupyterLab on notebooks/00_welcome.ipynb
 #   make test   create .venv, install the course, run the whole test suite
 #   make bench  print the benchmark table;  make grade  grade a folder of homework (see README)
 PYTHON ?= python3
@@ -17,7 +17,7 @@ $(STAMP): pyproject.toml constraints.txt
 install: $(STAMP)
 
 lab: install
-	$(BIN)/jupyter lab notebooks/
+	$(BIN)/jupyter lab --ServerApp.root_dir=$(CURDIR) notebooks/00_welcome.ipynb
 
 test: install
 	@bash tools/ensure-browser || true
