@@ -42,3 +42,20 @@ def test_relative_links_exist():
 def test_ci_runs_exactly_the_readme_test_command():
     assert "make test" in README
     assert "make test" in (ROOT / ".ci" / "run").read_text()
+
+
+def test_make_lab_opens_the_welcome_notebook_with_the_whole_course_served():
+    import shutil
+    import subprocess
+
+    if shutil.which("make") is None:
+        import pytest
+
+        pytest.skip("make is not installed")
+    out = subprocess.run(
+        ["make", "-n", "-o", ".venv/.installed", "lab"], cwd=ROOT, capture_output=True, text=True
+    ).stdout
+    line = next(x for x in out.splitlines() if "jupyter lab" in x)
+    assert f"--ServerApp.root_dir={ROOT}" in line  # exercises/ reachable from the file browser
+    assert line.split()[-1] == "notebooks/00_welcome.ipynb"
+    assert (ROOT / "notebooks" / "00_welcome.ipynb").is_file()
