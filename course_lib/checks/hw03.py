@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..knot_splines import bezier_points_from_g1
 from ._core import (
     AnswerProblem,
     as_sympy_expression,
@@ -27,21 +28,6 @@ from ._core import (
 D = np.array([[0, 0], [1, 2], [2, 3], [4, 3], [5, 1], [6, 0], [8, 1], [9, 3]], dtype=float)
 KNOTS_Q1 = (0.0, 1.0, 3.0)
 KNOTS_Q3 = ((0.0, 1.0, 2.0, 4.0), (0.0, 3.0, 6.0, 9.0), (0.0, 2.0, 3.0, 6.0))
-
-
-def _reference(d: np.ndarray, knots) -> np.ndarray:
-    """Control points p_0..p_{3L} (seed 004 §19.6), for comparisons only."""
-    t = np.asarray(knots, float)
-    L = t.size - 1
-    p = np.empty((3 * L + 1, d.shape[1]))
-    p[0], p[1], p[2] = d[0], d[1], d[2]
-    for i in range(1, L):
-        p[3 * i + 1], p[3 * i + 2] = d[2 * i + 1], d[2 * i + 2]
-    p[3 * L] = d[2 * L + 1]
-    for i in range(1, L):
-        a, b = t[i] - t[i - 1], t[i + 1] - t[i]
-        p[3 * i] = (b * p[3 * i - 1] + a * p[3 * i + 1]) / (a + b)
-    return p
 
 
 def _joint_problem(p_prev, p_joint, p_next, a: float, b: float) -> str | None:
@@ -74,7 +60,7 @@ def _q1(answer):
 
 
 def _compare_points(p: np.ndarray, d: np.ndarray, knots) -> str | None:
-    ref = _reference(d, knots)
+    ref = bezier_points_from_g1(d, knots)
     L = len(knots) - 1
     for k in range(ref.shape[0]):
         if k % 3 == 0 and 0 < k < 3 * L:
@@ -136,7 +122,7 @@ _Q5_KNOTS = KNOTS_Q3[2]
 @register("hw03.q5", "answer_q5", "left and right derivatives at t_1 in the global parameter")
 def _q5(answer):
     v = as_vector(answer, (2, 2), "answer_q5", "an array [left derivative, right derivative]")
-    p = _reference(D, _Q5_KNOTS)
+    p = bezier_points_from_g1(D, _Q5_KNOTS)
     t = _Q5_KNOTS
     left = 3 * (p[3] - p[2]) / (t[1] - t[0])
     right = 3 * (p[4] - p[3]) / (t[2] - t[1])

@@ -18,8 +18,15 @@ def _slider(spec: SliderSpec, value: float):
 
     spec.check(value)  # never clamp silently
 
-    style = {"description_width": "3em"}
-    layout = w.Layout(width="22em")
+    common = {
+        "value": float(value),
+        "step": spec.step,
+        "description": spec.description,
+        "continuous_update": True,
+        "readout_format": ".3g",
+        "style": {"description_width": "3em"},
+        "layout": w.Layout(width="22em"),
+    }
     if spec.log:
         if spec.min <= 0:
             raise ValueError(f"a log slider needs min > 0; {spec.name} has min {spec.min}")
@@ -28,30 +35,9 @@ def _slider(spec: SliderSpec, value: float):
         # that the whole range [min, max] is on the slider
         lo = float(np.floor(np.log10(spec.min) / spec.step + 1e-9) * spec.step)
         hi = float(np.ceil(np.log10(spec.max) / spec.step - 1e-9) * spec.step)
-        s = w.FloatLogSlider(
-            value=float(value),
-            base=10,
-            min=lo,
-            max=hi,
-            step=spec.step,
-            description=spec.description,
-            continuous_update=True,
-            readout_format=".3g",
-            style=style,
-            layout=layout,
-        )
+        s = w.FloatLogSlider(base=10, min=lo, max=hi, **common)
     else:
-        s = w.FloatSlider(
-            value=float(value),
-            min=spec.min,
-            max=spec.max,
-            step=spec.step,
-            description=spec.description,
-            continuous_update=True,
-            readout_format=".3g",
-            style=style,
-            layout=layout,
-        )
+        s = w.FloatSlider(min=spec.min, max=spec.max, **common)
     s.add_class(spec.css)
     return s
 

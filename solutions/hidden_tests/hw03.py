@@ -34,6 +34,26 @@ def _expected(d, knots):
     return np.array(rows)
 
 
+def _partial(cases):
+    """Partial credit: the fraction of cases answered right, and a note per wrong case.
+
+    Each case is ``(note if wrong, answer producer, expected array, name of the answer)``;
+    the producer is called here so that a shape problem costs that case only.
+    """
+    good, notes = 0, []
+    for wrong, produce, exp, name in cases:
+        try:
+            got = _array(produce(), exp.shape, name)
+        except AssertionError as exc:
+            notes.append(str(exc))
+            continue
+        if np.allclose(got, exp):
+            good += 1
+        else:
+            notes.append(wrong)
+    return good / len(cases), "; ".join(notes)
+
+
 def q1(ns):
     # p3 = (2/3)(2, 3) + (1/3)(4, 3) = (8/3, 3)
     p = _array(ns["answer_q1"], (2,), "answer_q1")
@@ -42,39 +62,35 @@ def q1(ns):
 
 def q2(ns):
     func = ns["g1_bezier_control_points"]
-    d3 = np.array([[0, 0, 1], [1, 1, 1], [2, 0, 0], [3, 1, 2], [4, 2, 1], [5, 0, 0], [6, 1, 1], [7, 2, 2.0]])
+    d3 = np.array(
+        [[0, 0, 1], [1, 1, 1], [2, 0, 0], [3, 1, 2], [4, 2, 1], [5, 0, 0], [6, 1, 1], [7, 2, 2.0]]
+    )
     cases = [(D, [0.0, 4.0, 5.0, 7.0]), (d3, [2.0, 2.5, 4.0, 4.25]), (D[:6], [0.0, 1.0, 1.5])]
-    good, notes = 0, []
-    for d, knots in cases:
-        exp = _expected(d, knots)
-        try:
-            got = _array(func(d.copy(), np.array(knots)), exp.shape, "the result")
-        except AssertionError as exc:
-            notes.append(str(exc))
-            continue
-        if np.allclose(got, exp):
-            good += 1
-        else:
-            notes.append(f"wrong for knots {knots}")
-    return good / len(cases), "; ".join(notes)
+    return _partial(
+        [
+            (
+                f"wrong for knots {k}",
+                lambda d=d, k=k: func(d.copy(), np.array(k)),
+                _expected(d, k),
+                "the result",
+            )
+            for d, k in cases
+        ]
+    )
 
 
 def q3(ns):
     answer = ns["answer_q3"]
-    assert isinstance(answer, (list, tuple)) and len(answer) == 3, "answer_q3 must be a list of three arrays"
-    good, notes = 0, []
-    for label, P, knots in zip("abc", answer, ([0, 1, 2, 4], [0, 3, 6, 9], [0, 2, 3, 6]), strict=True):
-        exp = _expected(D, knots)
-        try:
-            got = _array(P, exp.shape, f"P_{label}")
-        except AssertionError as exc:
-            notes.append(str(exc))
-            continue
-        if np.allclose(got, exp):
-            good += 1
-        else:
-            notes.append(f"({label}) is wrong")
-    return good / 3, "; ".join(notes)
+    assert isinstance(answer, (list, tuple)) and len(answer) == 3, (
+        "answer_q3 must be a list of three arrays"
+    )
+    knots = ([0, 1, 2, 4], [0, 3, 6, 9], [0, 2, 3, 6])
+    return _partial(
+        [
+            (f"({label}) is wrong", lambda P=P: P, _expected(D, k), f"P_{label}")
+            for label, P, k in zip("abc", answer, knots, strict=True)
+        ]
+    )
 
 
 def q4(ns):
@@ -105,16 +121,14 @@ def q6(ns):
 
 def q7(ns):
     func = ns["knot_ratio_beta1"]
-    cases = [([0.0, 2.0, 3.0, 7.0], [0.5, 4.0]), ([1.0, 4.0, 10.0], [2.0]), ([0.0, 1.0, 2.0, 3.0, 4.0], [1.0, 1.0, 1.0])]
-    good, notes = 0, []
-    for knots, exp in cases:
-        try:
-            got = _array(func(np.array(knots)), (len(exp),), "the result")
-        except AssertionError as exc:
-            notes.append(str(exc))
-            continue
-        if np.allclose(got, exp):
-            good += 1
-        else:
-            notes.append(f"wrong for knots {knots}")
-    return good / len(cases), "; ".join(notes)
+    cases = [
+        ([0.0, 2.0, 3.0, 7.0], [0.5, 4.0]),
+        ([1.0, 4.0, 10.0], [2.0]),
+        ([0.0, 1.0, 2.0, 3.0, 4.0], [1.0, 1.0, 1.0]),
+    ]
+    return _partial(
+        [
+            (f"wrong for knots {k}", lambda k=k: func(np.array(k)), np.array(exp), "the result")
+            for k, exp in cases
+        ]
+    )
