@@ -55,6 +55,7 @@ import shutil
 import sys
 import tempfile
 import time
+import uuid
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -195,8 +196,21 @@ def _client_class():
 
     class _Client(NotebookClient):
         def create_kernel_manager(self):
+            kw = {}
+            if os.name == "posix":
+                # Kernels talk over Unix sockets in the submission's own temporary folder:
+                # with TCP, kernels started side by side (--jobs) or next to other servers can
+                # race for the same free port and die at start-up ("Address already in use").
+                folder = self.resources.get("metadata", {}).get("path") or tempfile.gettempdir()
+                kw = {
+                    "transport": "ipc",
+                    "connection_file": os.path.join(folder, f"k-{uuid.uuid4().hex[:12]}.json"),
+                }
             self.km = AsyncKernelManager(
-                kernel_name="grader-current-env", kernel_spec_manager=_CurrentEnv(), config=self.config
+                kernel_name="grader-current-env",
+                kernel_spec_manager=_CurrentEnv(),
+                config=self.config,
+                **kw,
             )
             return self.km
 
