@@ -1,0 +1,1 @@
+"""The grader: hidden tests run here; student code runs in a sandbox (see grade.py)."""
