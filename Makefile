@@ -23,6 +23,7 @@ lab: install
 
 test: install
 	@bash tools/ensure-browser || true
+	@bash tools/ensure-sandbox || true
 	$(BIN)/ruff check course_lib tests benchmarks tools conftest.py solutions/hidden_tests
 	$(BIN)/python -m pytest
 
@@ -36,6 +37,7 @@ bench: install
 HW ?= hw01
 OUT ?= grading-output/$(HW)
 grade: install
+	@bash tools/ensure-sandbox || true
 	@test -n "$(SUBMISSIONS)" || (echo "usage: make grade HW=hw01 SUBMISSIONS=DIR [OUT=DIR]"; exit 2)
 	$(BIN)/python tools/grade.py --tests solutions/hidden_tests/$(HW).py \
 	    --submissions $(SUBMISSIONS) --out $(OUT) --jobs 2

@@ -32,6 +32,8 @@ sys.modules["grade"] = grade
 spec.loader.exec_module(grade)
 
 pytestmark = [pytest.mark.slow, pytest.mark.timeout(180)]
+# the sandbox where it works (make test installs bubblewrap), else unsandboxed (macOS)
+MODE = "bwrap" if grade.sandbox.bwrap_works()[0] else "none"
 
 
 def _hashes(paths) -> dict[Path, str]:
@@ -81,6 +83,7 @@ def fixture_run(tmp_path_factory):
             "--question-timeout", "2",
             "--time-limit", "40",
             "--jobs", "4",
+            "--sandbox", "auto",
         ]
     )  # fmt: skip
     return {"code": code, "out": out, "before": before, "after": _hashes(files),
@@ -117,14 +120,28 @@ def test_each_faulty_submission_gets_its_points_and_notes(fixture_run, name):
     for fragment in run_notes:
         assert fragment in feedback, f"{name}: no run note {fragment!r}"
     if total == 13:
-        assert all(float(row[q]) == grade.HiddenTests.load(HIDDEN / "hw01.py").points[q] for q in notes)
+        assert all(
+            float(row[q]) == grade.HiddenTests.load(HIDDEN / "hw01.py").points[q] for q in notes
+        )
 
 
 def test_score_table_layout(fixture_run):
     with open(fixture_run["out"] / "scores.csv", newline="", encoding="utf-8") as fh:
         rows = list(csv.reader(fh))
-    assert rows[0] == ["student", "q1", "q2", "q3", "q4", "q5", "q6", "q7", "total", "status"]
-    assert rows[1][0] == "(max)" and float(rows[1][-2]) == 13
+    assert rows[0] == [
+        "student",
+        "q1",
+        "q2",
+        "q3",
+        "q4",
+        "q5",
+        "q6",
+        "q7",
+        "total",
+        "status",
+        "sandbox",
+    ]
+    assert rows[1][0] == "(max)" and float(rows[1][-3]) == 13
 
 
 HOMEWORK_FILES = {
@@ -139,12 +156,19 @@ def test_solutions_full_marks_blank_exercises_zero():
     jobs = []
     for hw, name in HOMEWORK_FILES.items():
         tests = grade.HiddenTests.load(HIDDEN / f"{hw}.py")
-        jobs += [(ROOT / "solutions" / name, tests, "solution"), (ROOT / "exercises" / name, tests, "blank")]
+        jobs += [
+            (ROOT / "solutions" / name, tests, "solution"),
+            (ROOT / "exercises" / name, tests, "blank"),
+        ]
     before = _hashes(p for p, _, _ in jobs)
 
     def run(job):
         path, tests, kind = job
-        return kind, tests, grade.grade_notebook(path, tests, kind, cell_timeout=60, time_limit=120)
+        return (
+            kind,
+            tests,
+            grade.grade_notebook(path, tests, kind, cell_timeout=60, time_limit=120, mode=MODE),
+        )
 
     with ThreadPoolExecutor(max_workers=4) as pool:
         results = list(pool.map(run, jobs))
@@ -154,7 +178,9 @@ def test_solutions_full_marks_blank_exercises_zero():
             assert r.total == tests.max_points, (tests.homework, r.notes)
         else:
             assert r.total == 0, (tests.homework, r.points)
-            assert all("not answered" in n for n in r.notes.values() if "NotImplemented" in n or "..." in n)
+            assert all(
+                "not answered" in n for n in r.notes.values() if "NotImplemented" in n or "..." in n
+            )
     assert _hashes(p for p, _, _ in jobs) == before
 
 
@@ -170,7 +196,9 @@ def test_overall_time_limit_stops_a_slow_submission(tmp_path):
     nbformat.write(nb, path)
     tests = grade.HiddenTests.load(HIDDEN / "hw01.py")
     start = time.monotonic()
-    r = grade.grade_notebook(path, tests, "slow", cell_timeout=10, time_limit=4, question_timeout=2)
+    r = grade.grade_notebook(
+        path, tests, "slow", cell_timeout=10, time_limit=4, question_timeout=2, mode=MODE
+    )
     assert time.monotonic() - start < 15
     assert r.status == "time limit" and r.total == 0
     assert any("overall time limit of 4 s" in n for n in r.run_notes), r.run_notes

@@ -1,0 +1,173 @@
+"""Grades that cannot be forged: hostile submissions graded beside correct ones (issue 12).
+
+One batch: two copies of the hw01 solution, every cheat of ``tests/fixtures/redteam/cheats.py``
+(one per class of attack: monkeypatching, lying objects, reading the tests, forged results,
+reaching outside the kernel, resources) and submissions with colliding names.  Then:
+
+* every cheat scores exactly what its honest wrong answers score (0);
+* both correct submissions keep full marks and identical, canonical feedback;
+* ``scores.csv`` has a row for everyone; the grader exits 0;
+* no process started by a submission outlives the grader;
+* nothing outside the sandbox's own folder changed: submitted files are byte-identical, and no
+  file the cheats tried to plant exists anywhere they aimed at;
+* feedback files are unique per student; several notebooks of one student are flagged.
+
+Needs bubblewrap (``make test`` installs it as root); skipped with the reason otherwise.
+"""
+
+from __future__ import annotations
+
+import csv
+import hashlib
+import importlib.util
+import os
+import shutil
+import sys
+import tempfile
+from pathlib import Path
+
+import nbformat
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+HIDDEN = ROOT / "solutions" / "hidden_tests" / "hw01.py"
+SOLUTION = ROOT / "solutions" / "hw01_reparametrization.ipynb"
+
+sys.path.insert(0, str(ROOT / "tests" / "fixtures" / "redteam"))
+import cheats  # noqa: E402
+
+spec = importlib.util.spec_from_file_location("grade_rt", ROOT / "tools" / "grade.py")
+grade = importlib.util.module_from_spec(spec)
+sys.modules["grade_rt"] = grade
+spec.loader.exec_module(grade)
+
+ok, why = grade.sandbox.bwrap_works()
+pytestmark = [
+    pytest.mark.slow,
+    pytest.mark.timeout(420),
+    pytest.mark.skipif(not ok and os.environ.get("CI") != "true", reason=f"no sandbox: {why}"),
+]
+
+
+def _marker_processes() -> list[str]:
+    found = []
+    for pid in os.listdir("/proc"):
+        if not pid.isdigit():
+            continue
+        try:
+            cmd = Path(f"/proc/{pid}/cmdline").read_bytes().replace(b"\0", b" ").decode()
+        except OSError:
+            continue
+        if cheats.MARKER in cmd and "pytest" not in cmd:
+            found.append(f"{pid}: {cmd[:120]}")
+    return found
+
+
+def _pwned_files(roots: list[Path]) -> list[Path]:
+    hits = []
+    for root in roots:
+        if root.exists():
+            hits += [p for p in root.rglob(cheats.PWNED_NAME)]
+    return hits
+
+
+@pytest.fixture(scope="module")
+def batch(tmp_path_factory):
+    subs = tmp_path_factory.mktemp("submissions")
+    shutil.copyfile(SOLUTION, subs / "correct_1.ipynb")
+    shutil.copyfile(SOLUTION, subs / "correct_2.ipynb")
+    for name, (_, cells) in cheats.CHEATS.items():
+        nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c.strip()) for c in cells])
+        nbformat.write(nb, subs / f"cheat_{name}.ipynb")
+    blank = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(cheats.HONEST_WRONG.strip())])
+    # names: "a/b" (a folder) and "a__b" must not share a feedback file; "carol" sent two
+    (subs / "a").mkdir()
+    nbformat.write(blank, subs / "a" / "b.ipynb")
+    nbformat.write(blank, subs / "a__b.ipynb")
+    (subs / "carol").mkdir()
+    nbformat.write(blank, subs / "carol" / "first.ipynb")
+    shutil.copyfile(SOLUTION, subs / "carol" / "second.ipynb")
+    os.utime(subs / "carol" / "first.ipynb", (1_000_000_000, 1_000_000_000))
+
+    files = sorted(p for p in subs.rglob("*") if p.is_file())
+    before = {p: hashlib.sha256(p.read_bytes()).hexdigest() for p in files}
+    out = tmp_path_factory.mktemp("grades")
+    code = grade.main(
+        ["--tests", str(HIDDEN), "--submissions", str(subs), "--out", str(out),
+         "--cell-timeout", "15", "--question-timeout", "8", "--time-limit", "90",
+         "--jobs", "2", "--sandbox", "bwrap"]
+    )  # fmt: skip
+    import time
+
+    time.sleep(4)  # the detached cheat would write 3 s after it started
+    after = {p: hashlib.sha256(p.read_bytes()).hexdigest() for p in files}
+    with open(out / "scores.csv", newline="", encoding="utf-8") as fh:
+        rows = {r["student"]: r for r in csv.DictReader(fh)}
+    return {"code": code, "subs": subs, "out": out, "before": before, "after": after,
+            "rows": rows, "survivors": _marker_processes()}  # fmt: skip
+
+
+def test_batch_finishes_with_a_row_for_everyone(batch):
+    assert batch["code"] == 0
+    expected = {"correct_1", "correct_2", "a", "a__b", "carol",
+                *(f"cheat_{n}" for n in cheats.CHEATS)}  # fmt: skip
+    assert set(batch["rows"]) - {"(max)"} == expected
+
+
+@pytest.mark.parametrize("name", sorted(cheats.CHEATS))
+def test_each_cheat_scores_what_its_honest_wrong_answers_score(batch, name):
+    row = batch["rows"][f"cheat_{name}"]
+    assert float(row["total"]) == 0, (name, row)
+    assert row["sandbox"] == "bwrap"
+
+
+def test_correct_submissions_keep_full_marks_and_identical_feedback(batch):
+    tests = grade.HiddenTests.load(HIDDEN)
+    for name in ("correct_1", "correct_2"):
+        assert float(batch["rows"][name]["total"]) == tests.max_points, batch["rows"][name]
+        text = (batch["out"] / "feedback" / f"{name}.md").read_text(encoding="utf-8")
+        full = grade.Result(name, dict(tests.points), dict.fromkeys(tests.points, ""))
+        assert text == grade.feedback_markdown(full, tests)
+
+
+def test_nothing_outside_the_sandbox_changed(batch):
+    assert batch["before"] == batch["after"]
+    roots = [batch["subs"], batch["out"], ROOT, Path(tempfile.gettempdir())]
+    assert _pwned_files(roots) == []
+
+
+def test_no_process_outlives_the_grader(batch):
+    assert batch["survivors"] == []
+
+
+def test_names_are_unique_and_duplicates_flagged(batch):
+    feedback = sorted(p.name for p in (batch["out"] / "feedback").iterdir())
+    assert len(feedback) == len(batch["rows"]) - 1  # one file per student, none shared
+    assert "a.md" in feedback and "a__b.md" in feedback
+    carol = batch["rows"]["carol"]
+    assert "several notebooks" in carol["status"]
+    text = (batch["out"] / "feedback" / "carol.md").read_text(encoding="utf-8")
+    assert "carol/second.ipynb (the newest)" in text and "carol/first.ipynb" in text
+    assert float(carol["total"]) == 13
+
+
+def test_feedback_names_are_distinct_even_ignoring_case():
+    names = grade.feedback_names(["Alice", "alice", "a/b", "a%2Fb", "..", "x" * 300])
+    assert len({n.lower() for n in names.values()}) == 6
+    assert all("/" not in n and not n.startswith(".") and len(n) < 130 for n in names.values())
+
+
+def test_unsandboxed_grading_says_so_everywhere(tmp_path, capsys):
+    subs = tmp_path / "subs"
+    subs.mkdir()
+    nbformat.write(
+        nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(cheats.HONEST_WRONG.strip())]),
+        subs / "dana.ipynb",
+    )
+    code = grade.main(["--tests", str(HIDDEN), "--submissions", str(subs), "--out",
+                       str(tmp_path / "out"), "--sandbox", "none"])  # fmt: skip
+    assert code == 0
+    assert "WITHOUT a sandbox" in capsys.readouterr().err
+    rows = list(csv.DictReader(open(tmp_path / "out" / "scores.csv", encoding="utf-8")))
+    assert rows[-1]["sandbox"] == "none (unsandboxed)"
+    assert "WITHOUT a sandbox" in (tmp_path / "out" / "feedback" / "dana.md").read_text()
