@@ -67,6 +67,7 @@ import json
 import os
 import re
 import runpy
+import secrets
 import shutil
 import signal
 import subprocess
@@ -390,7 +391,8 @@ class _Session:
                     else "the notebook could not be run this far"
                 )
             self.requests += 1
-            response = self.job / f".response-{self.requests}.json"
+            # an unguessable name: code the student left running cannot plant a response
+            response = self.job / f".response-{secrets.token_hex(12)}.json"
             source = (
                 "__import__('course_lib._probe', fromlist=['serve']).serve("
                 f"{json.dumps(request)!r}, globals(), {str(response)!r})"
