@@ -15,6 +15,7 @@ from __future__ import annotations
 import csv
 import hashlib
 import importlib.util
+import json
 import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
@@ -126,22 +127,16 @@ def test_each_faulty_submission_gets_its_points_and_notes(fixture_run, name):
 
 
 def test_score_table_layout(fixture_run):
+    """One row per student and nothing else: the maximum lives in summary.md / results.json."""
     with open(fixture_run["out"] / "scores.csv", newline="", encoding="utf-8") as fh:
         rows = list(csv.reader(fh))
-    assert rows[0] == [
-        "student",
-        "q1",
-        "q2",
-        "q3",
-        "q4",
-        "q5",
-        "q6",
-        "q7",
-        "total",
-        "status",
-        "sandbox",
-    ]
-    assert rows[1][0] == "(max)" and float(rows[1][-3]) == 13
+    assert rows[0] == ["student", "q1", "q2", "q3", "q4", "q5", "q6", "q7", "raw_total",
+                       "late_penalty", "total", "status", "sandbox"]  # fmt: skip
+    assert sorted(r[0] for r in rows[1:]) == sorted(EXPECTED)
+    results = json.loads((fixture_run["out"] / "results.json").read_text(encoding="utf-8"))
+    assert sum(results["points"].values()) == 13
+    assert "maximum 13 points" in (fixture_run["out"] / "summary.md").read_text(encoding="utf-8")
+    assert (fixture_run["out"] / "histogram.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
 HOMEWORK_FILES = {

@@ -1,0 +1,169 @@
+"""Hand in a homework notebook: run it fresh, report what failed, write one submission file.
+
+From the last cell of a homework notebook::
+
+    from course_lib.submit import submit
+    submit("hw01_reparametrization.ipynb", student="s1234567")
+
+or from a shell: ``make submit HW=hw01 STUDENT=s1234567``.  The notebook is executed top to
+bottom in a fresh kernel (what the grader will do), the cells that raised are listed, and
+``submissions/<homework>-<student>.ipynb`` is written: the executed notebook with a small
+manifest in its metadata (``course_submission``: student id, homework, time, sha256 of the
+notebook without the manifest).  Upload that file.  The grader reads the manifest when present;
+the checks in the notebook stay feedback, the grade comes from the grader.
+"""
+
+from __future__ import annotations
+
+import copy
+import hashlib
+import json
+import os
+import re
+from dataclasses import dataclass, field
+from datetime import datetime, timezone
+from pathlib import Path
+
+__all__ = ["Submission", "manifest_of", "notebook_digest", "submit"]
+
+MANIFEST_KEY = "course_submission"
+_ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._@-]{0,63}$")
+
+
+def notebook_digest(nb: dict) -> str:
+    """sha256 of a notebook's JSON without its submission manifest (canonical key order)."""
+    data = copy.deepcopy(dict(nb))
+    data.setdefault("metadata", {})
+    data["metadata"] = {k: v for k, v in dict(data["metadata"]).items() if k != MANIFEST_KEY}
+    text = json.dumps(data, sort_keys=True, separators=(",", ":"), ensure_ascii=False)
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()
+
+
+def manifest_of(nb: dict) -> dict | None:
+    """The manifest of a submitted notebook, validated, or None (``tampered`` if it changed)."""
+    raw = dict(nb.get("metadata", {})).get(MANIFEST_KEY)
+    if not isinstance(raw, dict):
+        return None
+    student, homework, when, digest = (
+        raw.get(k) for k in ("student", "homework", "time", "sha256")
+    )
+    if not (
+        isinstance(student, str)
+        and _ID.match(student)
+        and isinstance(homework, str)
+        and isinstance(when, str)
+        and isinstance(digest, str)
+    ):
+        return None
+    try:
+        parsed = datetime.fromisoformat(when)
+    except ValueError:
+        return None
+    if parsed.tzinfo is None:
+        parsed = parsed.replace(tzinfo=timezone.utc)
+    return {
+        "student": student,
+        "homework": homework[:40],
+        "time": parsed,
+        "tampered": digest != notebook_digest(nb),
+    }
+
+
+@dataclass
+class Submission:
+    path: Path
+    student: str
+    homework: str
+    failed_cells: list[str] = field(default_factory=list)
+
+    def _repr_markdown_(self) -> str:
+        head = f"**Submission written:** `{self.path}` ({self.homework}, student {self.student})."
+        if not self.failed_cells:
+            return head + "\n\nEvery cell ran without an error in a fresh kernel. Upload that file."
+        items = "\n".join(f"- {c}" for c in self.failed_cells)
+        return (
+            head + f"\n\n**{len(self.failed_cells)} cell(s) raised an error** in a fresh "
+            f"kernel — the grader will see the same:\n{items}\n\nFix them and submit again, "
+            "or upload as is."
+        )
+
+    def __str__(self) -> str:
+        return self._repr_markdown_().replace("**", "").replace("`", "")
+
+
+def _homework_of(nb: dict, path: Path) -> str:
+    for cell in nb.get("cells", []):
+        src = "".join(cell.get("source", "")) if cell.get("cell_type") == "code" else ""
+        m = re.search(r"^HOMEWORK\s*=\s*[\"'](hw\d+)[\"']", src, re.M)
+        if m:
+            return m.group(1)
+    m = re.match(r"(hw\d+)", path.name)
+    if m:
+        return m.group(1)
+    raise ValueError(f"notebook {path}: cannot tell which homework it is (no HOMEWORK = 'hwNN')")
+
+
+def submit(
+    notebook: str | os.PathLike,
+    student: str | None = None,
+    *,
+    out_dir: str | os.PathLike | None = None,
+    timeout: float = 120,
+) -> Submission:
+    """Run ``notebook`` in a fresh kernel and write its submission file.
+
+    Parameters
+    ----------
+    notebook : path of the homework notebook (save it first: unsaved edits are not seen).
+    student : your student id (letters, digits, ``. _ @ -``); defaults to the environment
+        variable ``COURSE_STUDENT_ID``.
+    out_dir : where to write; default ``submissions/`` next to the notebook's folder.
+    timeout : seconds per cell.
+    """
+    import nbformat
+    from nbclient import NotebookClient
+
+    path = Path(notebook)
+    if not path.is_file():
+        raise ValueError(f"notebook must be an existing .ipynb file; {path} is not")
+    student = student if student is not None else os.environ.get("COURSE_STUDENT_ID", "")
+    if not isinstance(student, str) or not _ID.match(student):
+        raise ValueError(
+            "student must be your student id (1-64 letters, digits, '.', '_', '@', "
+            f"'-'; e.g. submit(..., student='s1234567')); got {student!r}"
+        )
+    nb = nbformat.read(path, as_version=4)
+    homework = _homework_of(nb, path)
+    nb.metadata.pop(MANIFEST_KEY, None)
+    client = NotebookClient(
+        nb,
+        timeout=timeout,
+        allow_errors=True,
+        kernel_name="python3",
+        resources={"metadata": {"path": str(path.parent)}},
+    )
+    client.execute()
+    failed = []
+    number = 0
+    for cell in nb.cells:
+        if cell.cell_type != "code":
+            continue
+        number += 1
+        for out in cell.get("outputs", []):
+            if out.get("output_type") == "error":
+                failed.append(
+                    f"code cell {number}: {out.get('ename')}: {str(out.get('evalue'))[:120]}"
+                )
+                break
+    nb.metadata[MANIFEST_KEY] = {
+        "student": student,
+        "homework": homework,
+        "time": datetime.now(timezone.utc).isoformat(timespec="seconds"),
+        "sha256": "",
+    }
+    nb.metadata[MANIFEST_KEY]["sha256"] = notebook_digest(nb)
+    target_dir = Path(out_dir) if out_dir is not None else path.parent.parent / "submissions"
+    target_dir.mkdir(parents=True, exist_ok=True)
+    target = target_dir / f"{homework}-{student}.ipynb"
+    nbformat.write(nb, target)
+    return Submission(target, student, homework, failed)

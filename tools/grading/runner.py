@@ -1,0 +1,499 @@
+"""Grade one submission: run it in a sandboxed kernel, run the hidden tests here.
+
+The mechanics behind ``tools/grade.py`` (see its docstring for the trust boundary): a
+:class:`_Session` runs the student's code cells in a fresh sandboxed kernel (restarting without a
+cell that hangs, floods output or kills the kernel), and answers the hidden tests' requests
+through ``course_lib._probe``; :func:`grade_notebook` runs every question of a
+:class:`HiddenTests` file in this process with :func:`protocol.run_question`.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import secrets
+import shutil
+import signal
+import subprocess
+import tempfile
+import time
+import types
+import uuid
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import nbformat
+
+from course_lib.submit import manifest_of
+
+from . import protocol, sandbox
+
+DEFAULT_CELL_TIMEOUT = 60.0
+DEFAULT_TIME_LIMIT = 300.0
+DEFAULT_QUESTION_TIMEOUT = 20.0
+MAX_ATTEMPTS = 6
+UNSANDBOXED_NOTE = (
+    "graded WITHOUT a sandbox (--sandbox none): the submission's code ran with the grader's "
+    "rights; scores are trustworthy only for trusted submissions"
+)
+
+
+class _WallLimit(Exception):
+    """The overall time limit of a submission was reached."""
+
+
+class _CellFailed(Exception):
+    """A cell could not complete: ``why`` says how (time-out, output flood, dead kernel)."""
+
+    def __init__(self, why: str) -> None:
+        super().__init__(why)
+        self.why = why
+
+
+@dataclass
+class HiddenTests:
+    path: Path
+    homework: str
+    points: dict[str, float]
+    functions: dict
+    source: str = ""
+
+    @classmethod
+    def load(cls, path: Path) -> HiddenTests:
+        return cls.from_source(Path(path).read_text(encoding="utf-8"), Path(path))
+
+    @classmethod
+    def from_source(cls, source: str, path: Path) -> HiddenTests:
+        """Load hidden tests from their source (a Dask worker gets the text, not the file)."""
+        module = types.ModuleType(f"hidden_tests_{Path(path).stem}")
+        module.__file__ = str(path)
+        exec(compile(source, str(path), "exec"), module.__dict__)
+        ns = module.__dict__
+        points = ns.get("POINTS")
+        if not isinstance(points, dict) or not points:
+            raise SystemExit(f"{path}: POINTS must be a non-empty dict question -> points")
+        missing = [q for q in points if not callable(ns.get(q))]
+        if missing:
+            raise SystemExit(f"{path}: no test function for {missing}")
+        functions = {q: ns[q] for q in points}
+        return cls(
+            Path(path), str(ns.get("HOMEWORK", Path(path).stem)), dict(points), functions, source
+        )
+
+    @property
+    def max_points(self) -> float:
+        return float(sum(self.points.values()))
+
+
+@dataclass
+class Result:
+    student: str
+    points: dict[str, float]
+    notes: dict[str, str]
+    run_notes: list[str] = field(default_factory=list)
+    status: str = "ok"
+    seconds: float = 0.0
+    sandbox: str = "bwrap"
+    file: str = ""
+    manifest_student: str | None = None  # the student id written by submit(), if any
+    submitted: str | None = None  # ISO time used for the late rule
+    time_source: str = "none"  # "manifest", "file" or "none"
+    days_late: int = 0
+    penalty: float = 0.0  # fraction of the points lost for lateness
+    lms: dict | None = None  # the roster entry: id, name, email
+
+    @property
+    def total(self) -> float:
+        return round(sum(self.points.values()), 2)
+
+
+@dataclass(frozen=True)
+class Options:
+    cell_timeout: float = DEFAULT_CELL_TIMEOUT
+    time_limit: float = DEFAULT_TIME_LIMIT
+    question_timeout: float = DEFAULT_QUESTION_TIMEOUT
+    mode: str = "bwrap"  # "bwrap" or "none" (resolved from --sandbox auto by main)
+    limits: sandbox.Limits = field(default_factory=sandbox.Limits)
+
+
+# ------------------------------------------------------------------------------ kernels
+
+
+def _client_class():
+    """A NotebookClient whose kernel runs sandboxed, over Unix sockets in the job folder."""
+    import ipykernel.kernelspec
+    from jupyter_client.kernelspec import KernelSpecManager
+    from jupyter_client.manager import AsyncKernelManager
+    from nbclient import NotebookClient
+
+    class _SandboxSpecs(KernelSpecManager):
+        argv: tuple[str, ...] = ()
+
+        def get_kernel_spec(self, kernel_name):
+            spec = ipykernel.kernelspec.get_kernel_dict()
+            spec["argv"] = list(self.argv)
+            return self.kernel_spec_class(resource_dir=ipykernel.kernelspec.RESOURCES, **spec)
+
+    class _Client(NotebookClient):
+        job: Path
+        kernel_cmd: list[str]
+        output_limit: int
+        output_used: int = 0
+        flooded: bool = False
+
+        def create_kernel_manager(self):
+            specs = _SandboxSpecs()
+            specs.argv = tuple(self.kernel_cmd)
+            # Unix sockets in the job folder: the sandbox has no network, and kernels started
+            # side by side cannot race for TCP ports.
+            self.km = AsyncKernelManager(
+                kernel_name="grader-sandbox",
+                kernel_spec_manager=specs,
+                config=self.config,
+                transport="ipc",
+                connection_file=str(self.job / f"k-{uuid.uuid4().hex[:12]}.json"),
+            )
+            return self.km
+
+        def output(self, outs, msg, display_id, cell_index):
+            size = len(json.dumps(msg.get("content", {}), default=str))
+            self.output_used += size
+            if self.output_used > self.output_limit:
+                if not self.flooded:
+                    self.flooded = True
+                    _kill_kernel(self)
+                return None
+            return super().output(outs, msg, display_id, cell_index)
+
+    return _Client
+
+
+def _kill_kernel(client) -> None:
+    km = getattr(client, "km", None)
+    provisioner = getattr(km, "provisioner", None)
+    process = getattr(provisioner, "process", None)
+    if process is None:
+        return
+    try:
+        os.killpg(process.pid, signal.SIGKILL)
+    except OSError:
+        try:
+            process.kill()
+        except OSError:
+            pass
+
+
+class _Kernel:
+    """One sandboxed kernel of one submission."""
+
+    def __init__(self, job: Path, opts: Options, deadline: float) -> None:
+        self.job = job
+        self.opts = opts
+        self.deadline = deadline
+        self.client = None
+        self.cgroup = None
+        self.executed = 0
+
+    def remaining(self) -> float:
+        return self.deadline - time.monotonic()
+
+    def start(self) -> None:
+        from nbclient.exceptions import DeadKernelError
+
+        self.cgroup = sandbox.ProcessGroupLimit(self.opts.limits.processes)
+        client = _client_class()(
+            nbformat.v4.new_notebook(),
+            timeout=None,
+            allow_errors=True,
+            shutdown_kernel="immediate",
+            shell_timeout_interval=1,  # notice a dead kernel within a second
+            startup_timeout=60,
+            resources={"metadata": {"path": str(self.job)}},
+        )
+        client.job = self.job
+        client.kernel_cmd = sandbox.kernel_argv(
+            self.job, self.opts.mode, self.opts.limits, self.cgroup
+        )
+        client.output_limit = self.opts.limits.output_bytes
+        client.timeout_func = lambda cell: self._timeout
+        self.client = client
+        self._timeout = 60.0
+        try:
+            client.km = client.create_kernel_manager()
+            # the kernel's own stdout/stderr (not its cells' output) go nowhere
+            client.start_new_kernel(stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+            client.start_new_kernel_client()
+        except Exception as exc:
+            self.stop()
+            raise _CellFailed(f"the kernel could not start ({type(exc).__name__})") from None
+        if not client.km.has_kernel:
+            self.stop()
+            raise DeadKernelError("no kernel")
+
+    def run(self, source: str, timeout: float) -> list:
+        """Run one cell; return its outputs or raise _CellFailed / _WallLimit."""
+        from nbclient.exceptions import CellTimeoutError, DeadKernelError
+
+        if self.remaining() <= 0:
+            raise _WallLimit
+        client = self.client
+        client.output_used, client.flooded = 0, False
+        self._timeout = max(0.5, min(timeout, self.remaining()))
+        cell = nbformat.v4.new_code_cell(source)
+        client.nb.cells.append(cell)
+        index = len(client.nb.cells) - 1
+        try:
+            client.execute_cell(cell, index)
+        except CellTimeoutError:
+            if self.remaining() <= 0.5:
+                raise _WallLimit from None
+            raise _CellFailed(
+                f"it ran longer than {self._timeout:g} s (an endless loop?)"
+            ) from None
+        except (DeadKernelError, RuntimeError, OSError) as exc:
+            if client.flooded:
+                raise _CellFailed(
+                    f"it printed more than {self.opts.limits.output_bytes} bytes of output; "
+                    "the kernel was stopped"
+                ) from None
+            raise _CellFailed(f"the kernel died ({type(exc).__name__})") from None
+        finally:
+            client.nb.cells[index] = nbformat.v4.new_code_cell("")  # keep no outputs around
+        if client.flooded:
+            raise _CellFailed(
+                f"it printed more than {self.opts.limits.output_bytes} bytes of output; "
+                "the kernel was stopped"
+            )
+        self.executed += 1
+        return cell.get("outputs", [])
+
+    def stop(self) -> None:
+        client, self.client = self.client, None
+        if client is not None:
+            _kill_kernel(client)
+            try:
+                if getattr(client, "km", None) is not None:
+                    client._cleanup_kernel()
+            except Exception:
+                pass
+        if self.cgroup is not None:
+            self.cgroup.kill_and_remove()
+            self.cgroup = None
+
+
+class _Session:
+    """The student's notebook running in a kernel, restarted (without bad cells) when needed."""
+
+    def __init__(
+        self, job: Path, cells: list[str], opts: Options, deadline: float, result: Result
+    ) -> None:
+        self.job = job
+        self.cells = cells
+        self.opts = opts
+        self.deadline = deadline
+        self.result = result
+        self.skipped: dict[int, str] = {}
+        self.kernel: _Kernel | None = None
+        self.errors: dict[int, str] = {}
+        self.broken = ""  # why no kernel can be had any more
+        self.attempts = 0
+        self.requests = 0
+
+    def ensure(self) -> _Kernel | None:
+        """A kernel that has run every (non-skipped) student cell, or None."""
+        while self.kernel is None and not self.broken:
+            if self.attempts >= MAX_ATTEMPTS:
+                self.broken = f"gave up after {MAX_ATTEMPTS} attempts"
+                self.result.run_notes.append(self.broken)
+                break
+            self.attempts += 1
+            kernel = _Kernel(self.job, self.opts, self.deadline)
+            k = -1
+            try:
+                kernel.start()
+                for k, source in enumerate(self.cells):
+                    if k in self.skipped:
+                        continue
+                    outputs = kernel.run(source, self.opts.cell_timeout)
+                    err = _error_text(outputs)
+                    if err:
+                        self.errors.setdefault(k, err)
+                self.kernel = kernel
+            except _WallLimit:
+                kernel.stop()
+                self.broken = "time limit"
+                self.result.status = "time limit"
+                where = f"before code cell {k + 1}" if k >= 0 else "before the notebook ran"
+                self.result.run_notes.append(
+                    f"the overall time limit of {self.opts.time_limit:g} s was reached {where}; "
+                    "what came after was not run"
+                )
+            except _CellFailed as exc:
+                kernel.stop()
+                if k < 0 or k in self.skipped:
+                    self.broken = f"the notebook could not be run: {exc.why}"
+                    self.result.run_notes.append(self.broken)
+                    self.result.status = "error"
+                    break
+                self.skipped[k] = exc.why
+                self.result.run_notes.append(f"code cell {k + 1} was skipped: {exc.why}")
+                self.result.status = "partly skipped"
+        return self.kernel
+
+    def transport(self, question_deadline: float):
+        def send(request: dict) -> bytes | None:
+            kernel = self.ensure()
+            if kernel is None:
+                raise protocol.ChannelBroken(
+                    "the overall time limit was reached"
+                    if self.broken == "time limit"
+                    else "the notebook could not be run this far"
+                )
+            self.requests += 1
+            # an unguessable name: code the student left running cannot plant a response
+            response = self.job / f".response-{secrets.token_hex(12)}.json"
+            source = (
+                "__import__('course_lib._probe', fromlist=['serve']).serve("
+                f"{json.dumps(request)!r}, globals(), {str(response)!r})"
+            )
+            left = question_deadline - time.monotonic()
+            if left <= 0:
+                raise protocol.ChannelBroken(
+                    f"the test did not finish within {self.opts.question_timeout:g} s "
+                    "(an endless loop in your code?)"
+                )
+            try:
+                kernel.run(source, left)
+            except _WallLimit:
+                self.kernel = None
+                kernel.stop()
+                self.broken = "time limit"
+                self.result.status = "time limit"
+                raise protocol.ChannelBroken("the overall time limit was reached") from None
+            except _CellFailed as exc:
+                self.kernel = None
+                kernel.stop()
+                if "longer than" in exc.why:
+                    why = (
+                        f"the test did not finish within {self.opts.question_timeout:g} s "
+                        "(an endless loop in your code?)"
+                    )
+                else:
+                    why = f"the test was stopped: {exc.why}"
+                raise protocol.ChannelBroken(why) from None
+            return _read_limited(response, protocol.MAX_RESPONSE_BYTES + 1)
+
+        return send
+
+    def close(self) -> None:
+        if self.kernel is not None:
+            self.kernel.stop()
+            self.kernel = None
+
+
+def _read_limited(path: Path, limit: int) -> bytes | None:
+    try:
+        with open(path, "rb") as fh:
+            data = fh.read(limit)
+        path.unlink()
+        return data
+    except OSError:
+        return None
+
+
+def _read_notebook(path: Path) -> tuple[nbformat.NotebookNode | None, str]:
+    try:
+        if path.stat().st_size > 50 << 20:
+            return None, "the file is larger than 50 MB"
+        text = path.read_bytes().decode("utf-8")
+    except UnicodeDecodeError:
+        return None, "the file is not UTF-8 text"
+    except OSError as exc:
+        return None, f"the file could not be read ({type(exc).__name__})"
+    try:
+        nb = nbformat.reads(text, as_version=4)
+    except Exception as exc:  # malformed JSON or not a notebook at all
+        first = str(exc).strip().splitlines()[0] if str(exc).strip() else type(exc).__name__
+        return None, f"the file is not a valid notebook ({first[:200]})"
+    if not isinstance(nb.get("cells"), list):
+        return None, "the file is not a valid notebook (no cells)"
+    return nb, ""
+
+
+def _error_text(outputs) -> str | None:
+    for out in outputs:
+        if out.get("output_type") == "error":
+            return f"{out.get('ename', 'Error')}: {str(out.get('evalue', ''))[:200]}"
+    return None
+
+
+def _jobs_base() -> Path:
+    base = Path(tempfile.gettempdir()) / "course-grader"
+    base.mkdir(mode=0o700, exist_ok=True)
+    return base
+
+
+def grade_notebook(
+    path: Path,
+    tests: HiddenTests,
+    student: str,
+    *,
+    cell_timeout: float = DEFAULT_CELL_TIMEOUT,
+    time_limit: float = DEFAULT_TIME_LIMIT,
+    question_timeout: float = DEFAULT_QUESTION_TIMEOUT,
+    mode: str = "bwrap",
+    limits: sandbox.Limits | None = None,
+) -> Result:
+    """Run one submission in a sandbox and grade it here; never raises for a bad submission."""
+    opts = Options(cell_timeout, time_limit, question_timeout, mode, limits or sandbox.Limits())
+    start = time.monotonic()
+    questions = list(tests.points)
+    result = Result(
+        student, dict.fromkeys(questions, 0.0), dict.fromkeys(questions, ""), sandbox=mode
+    )
+    nb, problem = _read_notebook(path)
+    if nb is None:
+        result.status = "invalid notebook"
+        result.run_notes.append(problem + "; no points could be given")
+        for q in questions:
+            result.notes[q] = "not graded (the file is not a valid notebook)"
+        return result
+    cells = [str(c.get("source", "")) for c in nb.cells if c.get("cell_type") == "code"]
+    manifest = manifest_of(nb)
+    if manifest is not None:
+        result.manifest_student = manifest["student"]
+        result.submitted = manifest["time"].isoformat()
+        result.time_source = "manifest"
+        if manifest["tampered"]:
+            result.run_notes.append("the notebook was changed after submit() (checksum mismatch)")
+        if manifest["homework"] != tests.homework:
+            result.run_notes.append(
+                f"submitted as {manifest['homework']!r}, graded as {tests.homework!r}"
+            )
+
+    job = Path(tempfile.mkdtemp(prefix="job-", dir=_jobs_base()))
+    session = _Session(job, cells, opts, start + time_limit, result)
+    try:
+        (job / "submission.ipynb").write_bytes(path.read_bytes())  # the kernel's working copy
+        session.ensure()
+        for q in questions:
+            if session.broken == "time limit":
+                result.notes[q] = "not graded: the overall time limit was reached"
+                continue
+            transport = session.transport(time.monotonic() + question_timeout)
+            fraction, note = protocol.run_question(tests.functions[q], protocol.Student(transport))
+            result.points[q] = round(fraction * tests.points[q], 2)
+            result.notes[q] = note
+        for k in sorted(session.errors):
+            if len(result.run_notes) < 12:
+                result.run_notes.append(f"code cell {k + 1} raised {session.errors[k]}")
+    finally:
+        session.close()
+        shutil.rmtree(job, ignore_errors=True)
+    for q in questions:
+        if result.points[q] < tests.points[q] and not result.notes[q]:
+            result.notes[q] = "wrong answer"
+    if mode != "bwrap":
+        result.run_notes.append(UNSANDBOXED_NOTE)
+    result.seconds = round(time.monotonic() - start, 1)
+    return result
