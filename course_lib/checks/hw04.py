@@ -159,5 +159,8 @@ def _q5(answer):
     return fail("on the segment, but it must divide it in the ratio 1 : β1.")
 
 
-register_choice("hw04.q6", "answer_q6", "1aad7e631232e4b8", "β1 = 1, β2 = 0 in a cubic G2 Beta-spline")
+register_choice(
+    "hw04.q6", "answer_q6", "1aad7e631232e4b8", "β1 = 1, β2 = 0 in a cubic G2 Beta-spline",
+    options="abcd", single=True,
+)
 

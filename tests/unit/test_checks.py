@@ -69,13 +69,16 @@ RIGHT = {
     "hw01.q2": _chain,
     "hw01.q3": "d",
     "hw01.q4": 2 / sp.Integer(5) ** sp.Rational(3, 2),  # det((1,2),(0,2)) / 5^(3/2)
-    "hw01.q5": np.array([1.0, 6.5]),  # ((s+s²)/2, (s+s²)²/4)'' at s = 1
+    # ((s+s²)/2, (s+s²)²/4)'' at s = 3/4: x'' = f'' = 1, y'' = 2 f'² + 2 f f''
+    # with f = 21/32, f' = 5/4: 25/8 + 21/16 = 71/16
+    "hw01.q5": np.array([1.0, 71 / 16]),
     "hw01.q6": "b, d",
     "hw01.q7": (2 * math.sqrt(5) + math.asinh(2)) / 4,
     "hw02.q1": 2.5,  # (5, -2.5) = 2.5 (2, -1)
     "hw02.q2": np.array([3.0, -4.0]),  # (-4, 10) - 9 (0, 2) = -4 (1, 2)
     "hw02.q3": lambda q, r, tol=1e-9: bool(
-        np.linalg.norm(q / np.linalg.norm(q) - r / np.linalg.norm(r)) < tol
+        min(np.linalg.norm(q), np.linalg.norm(r)) > 0
+        and np.linalg.norm(q / np.linalg.norm(q) - r / np.linalg.norm(r)) < tol
     ),
     "hw02.q4": 4 * B[0] * B[2] + 3 * B[1] ** 2,
     "hw02.q5": np.array([4.25, -0.75]),
