@@ -584,3 +584,64 @@ def test_blank_exercise_scores_zero_with_not_answered_notes(hw):
         fraction, note = run_question(getattr(module, q), LocalStudent(ns))
         assert fraction == 0.0, f"{hw}.{q}: {fraction}"
         assert note.startswith("not answered"), f"{hw}.{q}: {note}"
+
+
+# ------------------------------------------------------------------ an exception costs its case only
+def test_a_function_that_raises_on_some_inputs_loses_only_those_cases():
+    def is_g1_no_zero_guard(q, r, tol=1e-9):  # right, but divides by a zero length
+        nq, nr = math.hypot(*q), math.hypot(*r)
+        return math.dist([float(x) / nq for x in q], [float(x) / nr for x in r]) <= tol
+
+    v = check("hw02.q3", is_g1_no_zero_guard)
+    assert not v.passed and "ZeroDivisionError" in v.message
+    fraction, note = _grade("hw02.q3", is_g1_no_zero_guard)
+    assert 0.5 < fraction < 1.0 and "your code raised ZeroDivisionError" in note
+
+
+# ------------------------------------------------------------------ properties of the normalizers
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    letters=st.sets(st.sampled_from("abcde"), min_size=1),
+    sep=st.sampled_from([",", ", ", " ", "", "; ", " and "]),
+    upper=st.booleans(),
+    parens=st.booleans(),
+    as_list=st.booleans(),
+)
+def test_choice_reads_every_spelling_of_the_same_letters(letters, sep, upper, parens, as_list):
+    items = sorted(letters, reverse=True)
+    items = [f"({x})" if parens else x for x in items]
+    items = [x.upper() if upper else x for x in items]
+    value = items if as_list else sep.join(items)
+    canonical = answers.choice(answers.plain(value), "abcde")
+    assert canonical == ",".join(sorted(letters))
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.floats(-1e6, 1e6), st.sampled_from([(), (1,), (1, 1)]), st.sampled_from(["array", "list", "scalar"]))
+def test_number_accepts_any_size_one_container(x, shape, kind):
+    value = np.full(shape, x) if kind == "array" else np.full(shape, x).tolist() if kind == "list" else x
+    assert answers.number(answers.plain(value)) == x
+    fraction, _ = run_question(lambda s: answers.number(s["a"]) == x or 0.0, LocalStudent({"a": value}))
+    assert fraction == 1.0
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    st.lists(st.floats(-1e3, 1e3), min_size=1, max_size=5),
+    st.sampled_from(["array", "list", "tuple", "column", "sympy"]),
+)
+def test_array_accepts_every_container_of_the_right_shape(xs, kind):
+    n = len(xs)
+    value = {
+        "array": lambda: np.array(xs),
+        "list": lambda: list(xs),
+        "tuple": lambda: tuple(xs),
+        "column": lambda: np.array(xs)[:, None],
+        "sympy": lambda: sp.Matrix([sp.Float(x, 17) for x in xs]),
+    }[kind]()
+    got = answers.array(answers.plain(value), (n,))
+    assert answers.close(got, np.array(xs), tol=1e-12)
