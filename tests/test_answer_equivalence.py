@@ -179,6 +179,11 @@ def is_g1_absolute_tolerance(q, r, tol=1e-9):  # compares unnormalized vectors
     return bool(nq > 0 and np.linalg.norm(np.cross(np.append(q, 0)[:3], np.append(r, 0)[:3])) < tol and q @ r > 0)
 
 
+def is_g1_loose_tolerance(q, r, tol=1e-9):  # ignores tol: 1 % on unit vectors
+    nq, nr = np.linalg.norm(q), np.linalg.norm(r)
+    return bool(nq > 0 and nr > 0 and np.linalg.norm(q / nq - r / nr) <= 1e-2)
+
+
 def is_g1_returns_int(q, r, tol=1e-9):
     return int(is_g1_unit(q, r, tol))
 
@@ -341,6 +346,7 @@ TABLE = {
             is_g1_ignores_direction,
             is_g1_first_component_ratio,
             is_g1_absolute_tolerance,
+            is_g1_loose_tolerance,
             is_g1_returns_int,
             is_g1_zero_is_fine,
             returns_none,

@@ -18,7 +18,10 @@ ray, satisfies the Beta-constraint, ...) or compare with a value computed at che
 from the question's data -- they never print the expected value.
 
 They are only feedback: the grade comes from hidden tests that are not shipped with
-``course_lib`` (see ``tools/grade.py``).
+``course_lib`` (see ``tools/grade.py``).  Both read answers with :mod:`course_lib.answers`:
+the check first turns the live answer into the plain data the grader receives, then applies
+the same normalizers (numbers, arrays, choices, booleans; symbolic answers by their values at
+points), so an answer the check marks ✓ earns full points (``tests/test_answer_equivalence.py``).
 
 Lecture notebooks ("check your understanding")
 ----------------------------------------------

@@ -68,6 +68,7 @@ _Q3_CASES = [
     ((1.0, 2.0), (2.0, 4.0), True),
     ((1.0, 2.0), (-1.0, -2.0), False),
     ((1.0, 2.0), (2.0, 3.0), False),
+    ((2.0, 1.0), (2.0, 1.002), False),  # almost parallel: the tolerance is tol on unit vectors
     ((1.0, 0.0, 1.0), (3.0, 0.0, 3.0), True),
     # space: x and y parallel but not z -- a plane-only cross product says "parallel"
     ((1.0, 2.0, 0.0), (2.0, 4.0, 1.0), False),
