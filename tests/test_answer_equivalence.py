@@ -651,3 +651,32 @@ def test_array_accepts_every_container_of_the_right_shape(xs, kind):
     }[kind]()
     got = answers.array(answers.plain(value), (n,))
     assert answers.close(got, np.array(xs), tol=1e-12)
+
+
+# ------------------------------------------------------------------ the mismatches issue 12 found
+def _wrong_only_for_quadratics(mistake):
+    def stitch(V, b1, b2):
+        V = np.asarray(V, float)
+        if len(V) - 1 != 2:
+            return g2_stitch(V, b1, b2)
+        return g2_stitch(V, b1, 0.0) if mistake == "no beta2" else g2_stitch_cubic_only(V, b1, b2)
+
+    return stitch
+
+
+@pytest.mark.parametrize(
+    ("qid", "value", "accepted"),
+    [
+        ("hw02.q1", np.array([2.5]), True),  # was ✓ but 0 points
+        ("hw02.q6", ["a"], True),  # was ✓ but 0 points
+        ("hw02.q4", "4*beta1*beta3 + 3*beta2**2", True),  # was ✗ but full points
+        ("hw02.q3", is_g1_plane_cross, False),  # was ✓ but lost points
+        ("hw01.q5", np.array([1.0, 2 * 25 / 16 + 2 * 0.75]), False),  # q'(s): f(1) = 1 hid it
+        ("hw04.q2", _wrong_only_for_quadratics("no beta2"), False),  # β2 = 0 hid it
+        ("hw04.q2", _wrong_only_for_quadratics("/2"), False),
+    ],
+)
+def test_the_mismatches_found_in_issue_12_are_gone(qid, value, accepted):
+    assert check(qid, value).passed == accepted
+    fraction, _ = _grade(qid, value)
+    assert (fraction == 1.0) == accepted, fraction
