@@ -300,6 +300,12 @@ def test_choice_and_value_helpers_for_lectures():
     assert "shape" in check_value("l", [1, 2, 3], expected=np.array([1.0, 2.0])).message
     q = quiz("lecture01.q3", "Which is intrinsic?", ["speed", "unit tangent"], "b", answer_hash("b", salt="lecture01.q3"))
     assert q.passed and "(b) unit tangent" in q.message
+    h3 = answer_hash("b", salt="lecture01.q3")
+    for spelling in ("B", "(b)", ["b"], " b. "):
+        assert quiz("lecture01.q3", "?", ["x", "y"], spelling, h3).passed, spelling
+    hint = quiz("lecture01.q3", "?", ["x", "y"], "c", h3)
+    assert not hint.passed and "not one of the options" in hint.message
+    assert quiz("lecture01.q3", "?", ["x", "y"], ..., h3).status == "not answered"
 
 
 def test_verdict_display():
