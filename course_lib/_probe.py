@@ -134,14 +134,19 @@ def encode(value: Any, *, _depth: int = 0, _budget: _Budget | None = None) -> An
             out[str.__str__(k)] = encode(v, _depth=_depth + 1, _budget=budget)
         return {"__dict__": out}
     sp = _sympy_module()
+    if sp is not None and isinstance(value, sp.MatrixBase):  # mutable matrices are not sp.Basic
+        return [encode(row, _depth=_depth + 1, _budget=budget) for row in value.tolist()]
+    if sp is not None and isinstance(value, sp.logic.boolalg.BooleanAtom):
+        return bool(value)
     if sp is not None and isinstance(value, sp.Basic):
         if getattr(value, "is_number", False):
-            z = complex(value.evalf())
-            if z.imag == 0:
+            try:
+                z = complex(value.evalf())
+            except (TypeError, ValueError):
+                raise Unsupported("a sympy number in the answer has no numeric value") from None
+            if z.imag == 0 or z.imag != z.imag:
                 return _float(z.real)
             return {"__complex__": [_float(z.real), _float(z.imag)]}
-        if isinstance(value, sp.MatrixBase):
-            return [encode(row, _depth=_depth + 1, _budget=budget) for row in value.tolist()]
         text = sp.sstr(value)
         return {"__sympy__": text[:MAX_STRING]}
     if callable(value):
@@ -194,28 +199,54 @@ def _lookup(namespace: dict, name: Any) -> tuple[bool, Any]:
 def _as_sympy(value: Any):
     import sympy as sp
 
-    if isinstance(value, str):
-        return sp.sympify(value)
-    return sp.sympify(value, strict=True)
+    try:
+        if isinstance(value, str):
+            if len(value) > MAX_STRING:
+                raise Unsupported("the expression's text is too long")
+            return sp.sympify(value)
+        return sp.sympify(value, strict=True)
+    except Unsupported:
+        raise
+    except Exception:  # SympifyError, SyntaxError, TypeError, ...: the student's form, not a crash
+        what = "the text" if isinstance(value, str) else f"a {type(value).__name__}"
+        raise Unsupported(
+            f"a symbolic answer must be a sympy expression or its text; {what} could not be read "
+            "as one"
+        ) from None
 
 
 def _evaluate_expression(value: Any, symbols: list, points: list) -> dict:
+    """Free symbol names of ``value`` and (if they are among ``symbols``) its values at ``points``.
+
+    Used by :func:`handle` for the grader and by ``course_lib.answers.evaluate`` for the
+    feedback checks, so both see the same numbers.
+    """
     import sympy as sp
 
     expr = _as_sympy(value)
-    if not isinstance(expr, sp.Expr):
-        raise Unsupported(f"a symbolic answer must be an expression, not {type(expr).__name__}")
+    if not isinstance(expr, sp.Expr) or getattr(expr, "is_Matrix", False):
+        raise Unsupported(f"a symbolic answer must be a single expression, not a {type(expr).__name__}")
     free = sorted({s.name for s in expr.free_symbols})
     values = None
     if set(free) <= set(symbols):
-        by_name = {s.name: s for s in expr.free_symbols}
+        by_name: dict = {}
+        for s in expr.free_symbols:
+            by_name.setdefault(s.name, []).append(s)  # beta1 and beta1(positive) are one name
         values = []
         for point in points[:MAX_POINTS]:
             pairs = zip(symbols, point, strict=False)
-            subs = {by_name[n]: sp.Float(x, 30) for n, x in pairs if n in by_name}
-            z = complex(sp.N(expr.xreplace(subs), 20))
+            subs = {s: sp.Float(x, 30) for n, x in pairs for s in by_name.get(n, ())}
+            try:
+                z = complex(sp.N(expr.xreplace(subs), 20))
+            except (TypeError, ValueError):
+                raise Unsupported(
+                    "the expression does not evaluate to a number (is there an unevaluated "
+                    "function or derivative left in it?)"
+                ) from None
             values.append(
-                _float(z.real) if z.imag == 0 else {"__complex__": [_float(z.real), _float(z.imag)]}
+                _float(z.real)
+                if z.imag == 0 or z.imag != z.imag
+                else {"__complex__": [_float(z.real), _float(z.imag)]}
             )
     return {"symbols": free, "values": values}
 

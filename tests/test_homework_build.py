@@ -4,8 +4,10 @@
   ``tools/homework_src/`` (so the two copies never drift apart);
 * a student copy contains no solution text, and no hidden test content lives in exercises/ or
   in course_lib/ (hidden tests live in solutions/hidden_tests/ only);
-* hidden tests do not use course_lib (their expected values must be independent of the code
-  the solution notebooks call);
+* hidden tests use nothing of course_lib but ``course_lib.answers`` (the answer normalizers they
+  share with the feedback checks, which hold no mathematics): their expected values must be
+  independent of the code the solution notebooks call; they take the ``qN(student)`` form and
+  never parse student text (no sympify / parse_expr / eval);
 * every notebook has a title, a how-to, a Preparations cell, a check cell per question and a
   final check-all cell.
 """
@@ -13,6 +15,7 @@
 from __future__ import annotations
 
 import importlib.util
+import inspect
 import json
 import re
 import sys
@@ -116,12 +119,24 @@ def test_hidden_tests_stay_hidden(hidden):
 @pytest.mark.parametrize("hidden", HIDDEN, ids=lambda p: p.stem)
 def test_hidden_tests_are_independent_of_course_lib(hidden):
     text = hidden.read_text(encoding="utf-8")
-    imports = re.findall(r"^\s*(?:from|import)\s+(\S+)", text, flags=re.MULTILINE)
-    assert not [m for m in imports if m.startswith("course_lib")], imports
+    imports = re.findall(r"^\s*(from\s+\S+\s+import\s+[^\n]+|import\s+\S+)", text, flags=re.MULTILINE)
+    from_course_lib = [m for m in imports if "course_lib" in m]
+    assert from_course_lib == ["from course_lib import answers"], from_course_lib
+    for forbidden in ("sympify", "parse_expr", "eval(", "exec(", "import sympy", "lambdify"):
+        assert forbidden not in text, f"{hidden.name} must not use {forbidden}: student text is data"
     module = _load(f"hidden_{hidden.stem}", hidden)
     qs = [q.split(".")[1] for q in questions(hidden.stem)]
     assert list(module.POINTS) == qs, "hidden tests and feedback checks must cover the same questions"
-    assert all(callable(getattr(module, q)) for q in qs)
+    for q in qs:
+        fn = getattr(module, q)
+        assert callable(fn) and list(inspect.signature(fn).parameters) == ["student"], q
+
+
+def test_answers_module_knows_no_mathematics_of_the_course():
+    text = (ROOT / "course_lib" / "answers.py").read_text(encoding="utf-8")
+    imports = re.findall(r"^\s*(?:from|import)\s+(\S+)", text, flags=re.MULTILINE)
+    assert {m for m in imports if "course_lib" in m or m.startswith(".")} <= {"course_lib"}
+    assert "from course_lib import _probe" in text  # the only piece of course_lib it uses
 
 
 @pytest.mark.parametrize("source", SOURCES, ids=lambda p: p.stem)

@@ -18,7 +18,10 @@ ray, satisfies the Beta-constraint, ...) or compare with a value computed at che
 from the question's data -- they never print the expected value.
 
 They are only feedback: the grade comes from hidden tests that are not shipped with
-``course_lib`` (see ``tools/grade.py``).
+``course_lib`` (see ``tools/grade.py``).  Both read answers with :mod:`course_lib.answers`:
+the check first turns the live answer into the plain data the grader receives, then applies
+the same normalizers (numbers, arrays, choices, booleans; symbolic answers by their values at
+points), so an answer the check marks ✓ earns full points (``tests/test_answer_equivalence.py``).
 
 Lecture notebooks ("check your understanding")
 ----------------------------------------------
@@ -58,6 +61,7 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 
+from .. import answers
 from ._core import (
     FAIL,
     UNANSWERED,
@@ -194,6 +198,13 @@ def quiz(
     if not isinstance(choices, Mapping):
         choices = {chr(ord("a") + i): c for i, c in enumerate(choices)}
     lines = "; ".join(f"({k}) {v}" for k, v in choices.items())
+    letters = "".join(str(k) for k in choices)
+    if len(letters) == len(choices) and letters.isalpha():  # read it like a homework choice
+        try:
+            answer = answers.choice(answers.plain(answer), letters.lower())
+        except answers.AnswerError as exc:
+            status = UNANSWERED if exc.unanswered else FAIL
+            return Verdict(question_id, False, f"{prompt} {lines} -- {exc.message}", status)
     v = check_choice(question_id, answer, correct_hash)
     return Verdict(v.question, v.passed, f"{prompt} {lines} -- {v.message}", v.status)
 

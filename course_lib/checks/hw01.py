@@ -24,12 +24,15 @@ from ._core import (
     register_choice,
 )
 
+QUAD_HINT = "quad returns (value, error estimate): take the first"
+
 DATA = {
     # q1: c(t) = (t^2 + t, t^3 - 2 t), unit tangent at t = 1
     "q1": {"t": 1.0},
     # q4, q5, q7: the parabola q(u) = (u, u^2), u in [0, 1]; f(s) = (s + s^2) / 2
     "q4": {"u": 1.0},
-    "q5": {"s": 1.0},
+    # s = 3/4, not 1: f(1) = 1 would make q'(s) and q'(f(s)) indistinguishable
+    "q5": {"s": 0.75},
 }
 
 
@@ -86,7 +89,10 @@ def _q2(func):
     return ok(f"correct on {len(_Q2_CASES)} test cases (plane and space).")
 
 
-register_choice("hw01.q3", "answer_q3", "0dcc2129482c5605", "orientation-preserving change of variables")
+register_choice(
+    "hw01.q3", "answer_q3", "0dcc2129482c5605", "orientation-preserving change of variables",
+    options="abcd", single=True,
+)
 
 
 def _kappa_parabola(u: float) -> float:
@@ -98,7 +104,7 @@ def _kappa_parabola(u: float) -> float:
 def _q4(answer):
     k = as_number(answer, "answer_q4")
     expected = _kappa_parabola(DATA["q4"]["u"])
-    if math.isclose(k, expected, rel_tol=1e-9):
+    if close(k, expected):
         return ok("correct.")
     if math.isclose(k, -expected, rel_tol=1e-9):
         return fail("the size is right but the sign is not: the parabola turns left (counter-clockwise).")
@@ -109,7 +115,7 @@ def _q4(answer):
     return fail("not the signed curvature: κ = det(q', q'') / ‖q'‖³ at u = 1.")
 
 
-@register("hw01.q5", "answer_q5", "second derivative of the reparametrized parabola at s = 1")
+@register("hw01.q5", "answer_q5", "second derivative of the reparametrized parabola at s = 3/4")
 def _q5(answer):
     v = as_vector(answer, (2,), "answer_q5", "a plane vector np.array([x, y])")
     s = DATA["q5"]["s"]
@@ -119,17 +125,25 @@ def _q5(answer):
         return ok("correct: q''(f) f'² + q'(f) f''.")
     if close(v, q2 * f1**2):
         return fail("one term is missing: the chain rule gives q''(f) f'² + q'(f) f''.")
+    if close(v, q2 * f1**2 + np.array([1.0, 2 * s]) * f2):
+        return fail("q' must be evaluated at u = f(s), not at u = s.")
+    if close(v, q2 * f1 + q1 * f2):
+        return fail("differentiating q'(f(s)) gives q''(f(s)) f'(s): f' enters squared.")
     if close(v, q2):
-        return fail("that is q''(1) of the original curve; the reparametrization changes it.")
-    return fail("not q̃''(1): evaluate q', q'' at u = f(1) and f', f'' at s = 1, then use your chain rule.")
+        return fail("that is q'' of the original curve; the reparametrization changes it.")
+    return fail(
+        "not q̃''(3/4): evaluate q', q'' at u = f(3/4) and f', f'' at s = 3/4, then use your chain rule."
+    )
 
 
-register_choice("hw01.q6", "answer_q6", "a98d57c2f9308dc0", "which quantities are intrinsic")
+register_choice(
+    "hw01.q6", "answer_q6", "a98d57c2f9308dc0", "which quantities are intrinsic", options="abcde"
+)
 
 
 @register("hw01.q7", "answer_q7", "arc length of the parabola (u, u²), 0 ≤ u ≤ 1")
 def _q7(answer):
-    s = as_number(answer, "answer_q7")
+    s = as_number(answer, "answer_q7", QUAD_HINT)
     expected = (2 * 5**0.5 + math.asinh(2.0)) / 4
     if math.isclose(s, expected, rel_tol=1e-6):
         return ok("correct.")

@@ -11,10 +11,10 @@ from functools import cache
 
 import numpy as np
 
+from .. import answers
 from ._core import (
-    AnswerProblem,
+    as_expression_values,
     as_number,
-    as_sympy_expression,
     as_vector,
     call_answer,
     close,
@@ -36,7 +36,7 @@ Q5 = {"q1": np.array([2.0, 0.0]), "q2": np.array([1.0, -3.0]), "beta1": 0.5, "be
 
 @register("hw02.q1", "answer_q1", "β1 from two first derivative vectors")
 def _q1(answer):
-    b1 = as_number(answer, "answer_q1")
+    b1 = as_number(answer, "answer_q1", "one β1 for both coordinates")
     if b1 <= 0:
         return fail(
             "β1 must be > 0: it is the derivative u'(1) of an orientation-preserving change of "
@@ -68,9 +68,15 @@ _Q3_CASES = [
     ((1.0, 2.0), (2.0, 4.0), True),
     ((1.0, 2.0), (-1.0, -2.0), False),
     ((1.0, 2.0), (2.0, 3.0), False),
+    ((2.0, 1.0), (2.0, 1.002), False),  # almost parallel: the tolerance is tol on unit vectors
     ((1.0, 0.0, 1.0), (3.0, 0.0, 3.0), True),
+    # space: x and y parallel but not z -- a plane-only cross product says "parallel"
+    ((1.0, 2.0, 0.0), (2.0, 4.0, 1.0), False),
+    ((2.0, -1.0, 3.0), (4.0, -2.0, 6.0), True),
     ((1e-3, 2e-3), (5e3, 1e4), True),
+    ((2e-6, 1e-6), (1e-6, 2e-6), False),  # tiny and 37° apart: compare directions, not lengths
     ((0.0, 1.0), (0.0, 0.5), True),
+    ((0.0, 0.0), (1.0, 2.0), False),  # a zero vector is not regular
 ]
 
 
@@ -78,15 +84,14 @@ _Q3_CASES = [
 def _q3(func):
     for q1, r1, expected in _Q3_CASES:
         got = call_answer(func, np.array(q1), np.array(r1), name="is_g1")
-        if not isinstance(got, (bool, np.bool_)):
-            raise AnswerProblem(f"is_g1 must return True or False; it returned a {type(got).__name__}.")
-        if bool(got) != expected:
+        got = answers.boolean(answers.plain(got, "is_g1's result"), "is_g1's result")
+        if got != expected:
             why = {
                 True: "they are positive multiples of each other (β1 > 0 exists)",
                 False: "no β1 > 0 gives r'(0) = β1 q'(1)",
             }[expected]
-            return fail(f"is_g1(q1={q1}, r1={r1}) returned {bool(got)}, but {why}.")
-    return ok(f"correct on {len(_Q3_CASES)} cases (including 3-D and very different lengths).")
+            return fail(f"is_g1(q1={q1}, r1={r1}) returned {got}, but {why}.")
+    return ok(f"correct on {len(_Q3_CASES)} cases (plane and space, zero vectors, very different lengths).")
 
 
 @cache
@@ -107,16 +112,26 @@ def _chain_rule_coefficient(order: int, k: int):
     return sp.expand(sp.expand(expr).coeff(qs[k - 1])), betas
 
 
-@register("hw02.q4", "answer_q4", "coefficient of q''(1) in the fourth Beta-constraint (sympy)")
-def _q4(answer):
+#: Admissible values of (beta1, beta2, beta3, beta4) at which a symbolic answer is compared.
+_Q4_POINTS = np.random.default_rng(2024).uniform(0.5, 2.0, size=(6, 4))
+_Q4_SYMBOLS = ("beta1", "beta2", "beta3", "beta4")
+
+
+def _values_of(expr, betas) -> list[float]:
     import sympy as sp
 
+    f = sp.lambdify(betas, expr, "math")
+    return [float(f(*p)) for p in _Q4_POINTS.tolist()]
+
+
+@register("hw02.q4", "answer_q4", "coefficient of q''(1) in the fourth Beta-constraint (sympy)")
+def _q4(answer):
     expected, betas = _chain_rule_coefficient(4, 2)
-    expr = as_sympy_expression(answer, "answer_q4", {str(b): b for b in betas})
-    if sp.expand(expr - expected) == 0:
+    free, values = as_expression_values(answer, _Q4_SYMBOLS, _Q4_POINTS, "answer_q4")
+    if answers.expression_matches(free, values, _values_of(expected, betas), _Q4_SYMBOLS, "answer_q4"):
         return ok("correct -- and it is what the chain rule gives, not what seed 001 eq. (2.7) prints.")
     b1, b2 = betas[0], betas[1]
-    if sp.expand(expr - (4 * b1 * b2 + 3 * b2**2)) == 0:
+    if answers.expression_matches(free, values, _values_of(4 * b1 * b2 + 3 * b2**2, betas), _Q4_SYMBOLS):
         return fail(
             "that is seed 001 eq. (2.7) as transcribed -- which has a typo.  Derive it yourself: "
             "differentiate q(u(t)) four times."
@@ -137,7 +152,11 @@ def _q5(answer):
     return fail("not β1² q''(1) + β2 q'(1) (eq. 7.2).")
 
 
-register_choice("hw02.q6", "answer_q6", "d73c296c813d278a", "β1 = 1, β2 = 0 at a joint")
-register_choice("hw02.q7", "answer_q7", "9fea3db0a9c4d70b", "read the picture: G1 but not G2")
+register_choice(
+    "hw02.q6", "answer_q6", "d73c296c813d278a", "β1 = 1, β2 = 0 at a joint", options="abcd", single=True
+)
+register_choice(
+    "hw02.q7", "answer_q7", "9fea3db0a9c4d70b", "read the picture: G1 but not G2", options="abc", single=True
+)
 
 

@@ -10,10 +10,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from .. import answers
 from ..knot_splines import bezier_points_from_g1
 from ._core import (
-    AnswerProblem,
-    as_sympy_expression,
+    as_expression_values,
     as_vector,
     call_answer,
     close,
@@ -102,11 +102,8 @@ def _q2(func):
 
 @register("hw03.q3", "answer_q3", "Finn's exercise 19.8.2 with three knot sequences")
 def _q3(answer):
-    if answer is Ellipsis:
-        raise AnswerProblem("not answered yet (replace the ... by your answer).", unanswered=True)
-    if not isinstance(answer, (list, tuple)) or len(answer) != 3:
-        raise AnswerProblem("answer_q3 must be a list of three arrays [P_a, P_b, P_c].")
-    for label, P, knots in zip("abc", answer, KNOTS_Q3, strict=True):
+    parts = answers.items(answers.plain(answer, "answer_q3"), 3, "answer_q3", "arrays [P_a, P_b, P_c]")
+    for label, P, knots in zip("abc", parts, KNOTS_Q3, strict=True):
         p = as_vector(P, (10, 2), f"P_{label}", "an array of the 10 control points p_0 .. p_9")
         why = _compare_points(p, D, knots)
         if why:
@@ -114,7 +111,10 @@ def _q3(answer):
     return ok("correct for all three knot sequences.")
 
 
-register_choice("hw03.q4", "answer_q4", "499d39e459116bc7", "which knot sequence gives C1 in local parameters")
+register_choice(
+    "hw03.q4", "answer_q4", "499d39e459116bc7", "which knot sequence gives C1 in local parameters",
+    options="abc",
+)
 
 _Q5_KNOTS = KNOTS_Q3[2]
 
@@ -138,17 +138,35 @@ def _q5(answer):
     return fail("not the one-sided derivatives at t_1: differentiate each cubic segment in t.")
 
 
+_Q6_SYMBOLS = ("t0", "t1", "t2", "p2", "p4")
+
+
+def _q6_points() -> np.ndarray:
+    """Admissible (t0, t1, t2, p2, p4): increasing knots, any p2, p4."""
+    rng = np.random.default_rng(19)
+    t = np.cumsum(rng.uniform(0.5, 2.0, size=(6, 3)), axis=1) - 1.0
+    return np.column_stack([t, rng.uniform(-2.0, 2.0, size=(6, 2))])
+
+
+_Q6_POINTS = _q6_points()
+
+
 @register("hw03.q6", "answer_q6", "sympy: the left derivative at t_1 in closed form")
 def _q6(answer):
     import sympy as sp
 
-    t0, t1, t2, p2, p4 = sp.symbols("t0 t1 t2 p2 p4")
-    expr = as_sympy_expression(answer, "answer_q6", {str(s): s for s in (t0, t1, t2, p2, p4)})
+    t0, t1, t2, p2, p4 = syms = sp.symbols(_Q6_SYMBOLS)
+    free, values = as_expression_values(answer, _Q6_SYMBOLS, _Q6_POINTS, "answer_q6")
     p3 = ((t2 - t1) * p2 + (t1 - t0) * p4) / (t2 - t0)
+
+    def at_points(expr):
+        f = sp.lambdify(syms, expr, "math")
+        return [float(f(*p)) for p in _Q6_POINTS.tolist()]
+
     left = 3 * (p3 - p2) / (t1 - t0)
-    if sp.cancel(sp.together(expr - left)) == 0:
+    if answers.expression_matches(free, values, at_points(left), _Q6_SYMBOLS, "answer_q6"):
         return ok("correct: t1 cancels, and the right derivative gives the same expression.")
-    if sp.cancel(sp.together(expr - 3 * (p3 - p2))) == 0:
+    if answers.expression_matches(free, values, at_points(3 * (p3 - p2)), _Q6_SYMBOLS):
         return fail("that is the derivative in the local parameter; divide by t1 - t0 (chain rule).")
     return fail("not the left derivative 3 (p3 - p2) / (t1 - t0) with p3 from the knots; simplify it.")
 

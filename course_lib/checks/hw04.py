@@ -114,6 +114,7 @@ def _q3(answer):
 _Q4_CASES = [
     (np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]]), np.array([1.0, 2.0, 0.5])),
     (np.array([[0.0, 0.0], [2.0, 2.0], [4.0, 0.0], [6.0, 2.0], [8.0, 0.0]]), np.array([0.25, 1.0, 3.0, 1.5])),
+    (np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 1.0]]), np.array([0.5, 2.0])),  # a single segment
 ]
 
 
@@ -159,5 +160,8 @@ def _q5(answer):
     return fail("on the segment, but it must divide it in the ratio 1 : β1.")
 
 
-register_choice("hw04.q6", "answer_q6", "1aad7e631232e4b8", "β1 = 1, β2 = 0 in a cubic G2 Beta-spline")
+register_choice(
+    "hw04.q6", "answer_q6", "1aad7e631232e4b8", "β1 = 1, β2 = 0 in a cubic G2 Beta-spline",
+    options="abcd", single=True,
+)
 

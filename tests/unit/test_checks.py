@@ -69,13 +69,16 @@ RIGHT = {
     "hw01.q2": _chain,
     "hw01.q3": "d",
     "hw01.q4": 2 / sp.Integer(5) ** sp.Rational(3, 2),  # det((1,2),(0,2)) / 5^(3/2)
-    "hw01.q5": np.array([1.0, 6.5]),  # ((s+s²)/2, (s+s²)²/4)'' at s = 1
+    # ((s+s²)/2, (s+s²)²/4)'' at s = 3/4: x'' = f'' = 1, y'' = 2 f'² + 2 f f''
+    # with f = 21/32, f' = 5/4: 25/8 + 21/16 = 71/16
+    "hw01.q5": np.array([1.0, 71 / 16]),
     "hw01.q6": "b, d",
     "hw01.q7": (2 * math.sqrt(5) + math.asinh(2)) / 4,
     "hw02.q1": 2.5,  # (5, -2.5) = 2.5 (2, -1)
     "hw02.q2": np.array([3.0, -4.0]),  # (-4, 10) - 9 (0, 2) = -4 (1, 2)
     "hw02.q3": lambda q, r, tol=1e-9: bool(
-        np.linalg.norm(q / np.linalg.norm(q) - r / np.linalg.norm(r)) < tol
+        min(np.linalg.norm(q), np.linalg.norm(r)) > 0
+        and np.linalg.norm(q / np.linalg.norm(q) - r / np.linalg.norm(r)) < tol
     ),
     "hw02.q4": 4 * B[0] * B[2] + 3 * B[1] ** 2,
     "hw02.q5": np.array([4.25, -0.75]),
@@ -297,6 +300,12 @@ def test_choice_and_value_helpers_for_lectures():
     assert "shape" in check_value("l", [1, 2, 3], expected=np.array([1.0, 2.0])).message
     q = quiz("lecture01.q3", "Which is intrinsic?", ["speed", "unit tangent"], "b", answer_hash("b", salt="lecture01.q3"))
     assert q.passed and "(b) unit tangent" in q.message
+    h3 = answer_hash("b", salt="lecture01.q3")
+    for spelling in ("B", "(b)", ["b"], " b. "):
+        assert quiz("lecture01.q3", "?", ["x", "y"], spelling, h3).passed, spelling
+    hint = quiz("lecture01.q3", "?", ["x", "y"], "c", h3)
+    assert not hint.passed and "not one of the options" in hint.message
+    assert quiz("lecture01.q3", "?", ["x", "y"], ..., h3).status == "not answered"
 
 
 def test_verdict_display():

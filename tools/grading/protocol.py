@@ -63,12 +63,22 @@ class NotAnswered(Exception):
     """The name still holds ``...`` or the function still raises NotImplementedError."""
 
 
-class StudentRaised(Exception):
-    """The student's function raised an exception (its message is the note)."""
+class StudentRaised(AssertionError):
+    """The student's function raised an exception (its message is the note).
+
+    An ``AssertionError`` so that a hidden test scoring case by case
+    (``course_lib.answers.partial_credit``) charges it to that case only.
+    """
+
+    def __str__(self) -> str:
+        return f"your code raised {self.args[0] if self.args else 'an exception'}"
 
 
-class BadAnswer(Exception):
-    """The answer cannot be used: unsupported type, too large, malformed."""
+class BadAnswer(AssertionError):
+    """The answer cannot be used: unsupported type, too large, malformed.
+
+    An ``AssertionError`` for the same reason as :class:`StudentRaised`.
+    """
 
 
 class ChannelBroken(Exception):

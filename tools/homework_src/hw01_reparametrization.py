@@ -128,17 +128,17 @@ check("hw01.q4", answer_q4)
 # ## Question 5 — reparametrize the parabola (compute)
 #
 # Reparametrize the parabola of question 4 by the change of variables $f(s) = (s + s^2)/2$ of
-# question 3: $\tilde{\mathbf q}(s) = \mathbf q(f(s))$. Compute $\tilde{\mathbf q}''(1)$ (shape
+# question 3: $\tilde{\mathbf q}(s) = \mathbf q(f(s))$. Compute $\tilde{\mathbf q}''(3/4)$ (shape
 # `(2,)`), for instance with your `chain_rule_derivatives`.
 
 # %%
 ### BEGIN SOLUTION
-s = 1.0
+s = 0.75
 f, f1, f2 = (s + s**2) / 2, (1 + 2 * s) / 2, 1.0
 answer_q5 = chain_rule_derivatives(np.array([1.0, 2 * f]), np.array([0.0, 2.0]), f1, f2)[1]
 # the same by differentiating q(f(s)) directly with sympy:
 s_ = sp.Symbol("s")
-direct = sp.Matrix([(s_ + s_**2) / 2, ((s_ + s_**2) / 2) ** 2]).diff(s_, 2).subs(s_, 1)
+direct = sp.Matrix([(s_ + s_**2) / 2, ((s_ + s_**2) / 2) ** 2]).diff(s_, 2).subs(s_, sp.Rational(3, 4))
 assert np.allclose(answer_q5, np.array(direct, dtype=float).ravel())
 ### END SOLUTION
 ### STUDENT answer_q5 = ...
