@@ -62,7 +62,7 @@ EXPECTED = {
     ),
     "wrong_types": (
         3,
-        {"q1": "shape", "q2": "shape", "q3": "string", "q5": "ValueError", "q7": "wrong"},
+        {"q1": "is None", "q2": "shape", "q3": "as a string", "q5": "is a string", "q7": "NaN"},
         [],
         "ok",
     ),

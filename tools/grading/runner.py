@@ -340,7 +340,10 @@ class _Session:
                 self.result.status = "partly skipped"
         return self.kernel
 
-    def transport(self, question_deadline: float):
+    def transport(self, question_timeout: float):
+        """Requests of one question; its clock starts once a kernel is ready for it."""
+        clock = {"deadline": None}
+
         def send(request: dict) -> bytes | None:
             kernel = self.ensure()
             if kernel is None:
@@ -349,6 +352,9 @@ class _Session:
                     if self.broken == "time limit"
                     else "the notebook could not be run this far"
                 )
+            if clock["deadline"] is None:
+                clock["deadline"] = time.monotonic() + question_timeout
+            question_deadline = clock["deadline"]
             self.requests += 1
             # an unguessable name: code the student left running cannot plant a response
             response = self.job / f".response-{secrets.token_hex(12)}.json"
@@ -480,7 +486,7 @@ def grade_notebook(
             if session.broken == "time limit":
                 result.notes[q] = "not graded: the overall time limit was reached"
                 continue
-            transport = session.transport(time.monotonic() + question_timeout)
+            transport = session.transport(question_timeout)
             fraction, note = protocol.run_question(tests.functions[q], protocol.Student(transport))
             result.points[q] = round(fraction * tests.points[q], 2)
             result.notes[q] = note

@@ -64,7 +64,6 @@ check("hw01.q1", answer_q1)
 #
 # It must work in the plane and in space.
 
-
 # %%
 def chain_rule_derivatives(q1, q2, f1, f2):
     """First and second derivative of q(f(s)), stacked as an array of shape (2, dim)."""
@@ -73,7 +72,6 @@ def chain_rule_derivatives(q1, q2, f1, f2):
     return np.array([q1 * f1, q2 * f1**2 + q1 * f2])
     ### END SOLUTION
     ### STUDENT raise NotImplementedError("write the body of chain_rule_derivatives")
-
 
 # %%
 check("hw01.q2", chain_rule_derivatives)

@@ -84,7 +84,6 @@ check("hw02.q2", answer_q2)
 # so that very long and very short vectors are handled alike. A zero vector is not regular:
 # return `False`.
 
-
 # %%
 def is_g1(q1, r1, tol=1e-9):
     """True if r1 = beta1 * q1 for some beta1 > 0."""
@@ -96,7 +95,6 @@ def is_g1(q1, r1, tol=1e-9):
     return bool(np.linalg.norm(q1 / nq - r1 / nr) <= tol)
     ### END SOLUTION
     ### STUDENT raise NotImplementedError("write the body of is_g1")
-
 
 # %%
 check("hw02.q3", is_g1)
@@ -192,10 +190,7 @@ for i in range(curve_q7.n_segments):
 for name, (x, y) in zip("ABC", curve_q7.joint_points, strict=True):
     ax_curve.plot(x, y, "ko", ms=4)
     ax_curve.annotate(name, (x, y), xytext=(0, 8), textcoords="offset points", ha="center")
-for ax, title in (
-    (ax_angle, "direction of the unit tangent (degrees)"),
-    (ax_kappa, "signed curvature κ"),
-):
+for ax, title in ((ax_angle, "direction of the unit tangent (degrees)"), (ax_kappa, "signed curvature κ")):
     ax.set_xticks(curve_q7.joint_parameters, list("ABC"))
     ax.grid(axis="x", ls=":")
     ax.set_title(title)

@@ -65,7 +65,6 @@ check("hw03.q1", answer_q1)
 # $3L + 1$ Bézier control points $\mathbf p_0, \dots, \mathbf p_{3L}$ as an array of shape
 # `(3L + 1, dim)`. It must work for any $L \ge 1$ and in space too.
 
-
 # %%
 def g1_bezier_control_points(d, knots):
     """Bézier control points p_0 .. p_{3L} of Finn's G1 spline (seed 004 §19.6)."""
@@ -83,7 +82,6 @@ def g1_bezier_control_points(d, knots):
     return p
     ### END SOLUTION
     ### STUDENT raise NotImplementedError("write the body of g1_bezier_control_points")
-
 
 # %%
 check("hw03.q2", g1_bezier_control_points)
@@ -193,7 +191,6 @@ check("hw03.q6", answer_q6)
 # $L + 1$ knots, the $L - 1$ values of $\beta_1$ at the interior joints $i = 1, \dots, L-1$ as a
 # numpy array.
 
-
 # %%
 def knot_ratio_beta1(knots):
     """beta1 at each interior joint of Finn's G1 spline with these knots."""
@@ -202,7 +199,6 @@ def knot_ratio_beta1(knots):
     return dt[1:] / dt[:-1]
     ### END SOLUTION
     ### STUDENT raise NotImplementedError("write the body of knot_ratio_beta1")
-
 
 # %%
 check("hw03.q7", knot_ratio_beta1)

@@ -57,7 +57,6 @@ check("hw04.q1", answer_q1)
 # that the curves meet with $G^2$ continuity with respect to $\beta_1, \beta_2$. Derive
 # $\mathbf W_2$ from the second Beta-constraint; it must work for every degree.
 
-
 # %%
 def g2_stitch(V, beta1, beta2):
     """W0, W1, W2 of the next Bézier curve for G2 continuity (seed 000 eq. 9-11)."""
@@ -70,7 +69,6 @@ def g2_stitch(V, beta1, beta2):
     return np.array([W0, W1, W2])
     ### END SOLUTION
     ### STUDENT raise NotImplementedError("write the body of g2_stitch")
-
 
 # %%
 check("hw04.q2", g2_stitch)
@@ -113,7 +111,6 @@ check("hw04.q3", answer_q3)
 # Write `quadratic_beta_spline(V, beta1)` (with `V` of shape `(m + 1, 2)` and `beta1` of shape
 # `(m,)`) returning the $m - 1$ Bézier polygons as an array of shape `(m - 1, 3, 2)`.
 
-
 # %%
 def quadratic_beta_spline(V, beta1):
     """Bézier control polygons of the quadratic G1 Beta-spline (seed 000 eq. 18-19)."""
@@ -128,7 +125,6 @@ def quadratic_beta_spline(V, beta1):
     return polygons
     ### END SOLUTION
     ### STUDENT raise NotImplementedError("write the body of quadratic_beta_spline")
-
 
 # %%
 check("hw04.q4", quadratic_beta_spline)
