@@ -40,18 +40,19 @@ replaced.  ``--time-limit`` bounds the whole submission.  The job folder is alwa
 
 Hidden tests
 ------------
-A hidden test file is plain Python (not collected by pytest: do not name it ``test_*.py``)::
+A hidden test file is plain Python (not collected by pytest: do not name it ``test_*.py``) with
+``HOMEWORK``, ``POINTS`` (questions in report order, with their points) and one function
+``qN(student)`` per question; ``student`` gives plain data only (``tools/grading/protocol.py``).
+The format, the answer readers of ``course_lib.answers`` and the rules are in
+``solutions/hidden_tests/README.md``.  Expected values come from first principles, never from
+the code the solution notebook calls.
 
-    HOMEWORK = "hw01"
-    POINTS = {"q1": 2, "q2": 3}          # questions in report order, with their points
-
-    def q1(student):                      # student: see tools/grading/protocol.py
-        T = student["answer_q1"]          # plain data (a missing name is reported for you)
-        assert ..., "message for the student"
-        # return None for full points, or a fraction in [0, 1], or (fraction, "message")
-
-Hidden tests compute their expected values from first principles (numpy, closed forms), not
-with the code the solution notebook calls.
+Gradebooks
+----------
+``--roster`` maps submissions to LMS ids; ``--format plain|canvas|moodle`` chooses the layout of
+``scores.csv``; ``--deadline`` and ``--late-penalty`` apply a late rule (stated in every feedback
+file); ``--only STUDENT`` regrades one student and merges the row; ``--executor dask`` grades on a
+Dask cluster (``--scheduler``).  See ``tools/grading/reports.py`` and the README.
 
 The exit code is 0 whenever the batch ran, whatever the submissions did; it is non-zero only
 for the grader's own failures (bad arguments, a broken hidden-test file, no submissions).
@@ -66,7 +67,6 @@ import os
 import re
 import sys
 import threading
-import traceback
 from concurrent.futures import ThreadPoolExecutor, as_completed
 from dataclasses import asdict
 from datetime import datetime, timezone
@@ -83,6 +83,7 @@ from grading.runner import (
     HiddenTests,
     Result,
     grade_notebook,
+    grade_payload,
 )
 
 __all__ = [
@@ -225,33 +226,6 @@ def resolve_sandbox(choice: str) -> tuple[str, str]:
     return "none", f"WARNING: {why}; " + UNSANDBOXED_NOTE
 
 
-def _grade_payload(payload: dict) -> dict:
-    """Grade one submission from plain data (runs locally or on a Dask worker)."""
-    import tempfile
-
-    tests = HiddenTests.from_source(payload["tests_source"], Path(payload["tests_name"]))
-    with tempfile.TemporaryDirectory(prefix="submission-") as tmp:
-        path = Path(tmp) / "submission.ipynb"
-        path.write_bytes(payload["notebook"])
-        try:
-            r = grade_notebook(path, tests, payload["student"], **payload["options"])
-        except BaseException as exc:  # an error barrier: one submission never ends the batch
-            if isinstance(exc, KeyboardInterrupt):
-                raise
-            traceback.print_exc()
-            r = Result(
-                payload["student"],
-                dict.fromkeys(tests.points, 0.0),
-                dict.fromkeys(tests.points, "not graded (grader error)"),
-                status="grader error",
-                sandbox=payload["options"]["mode"],
-            )
-            r.run_notes.append(
-                f"the grader failed on this submission ({type(exc).__name__}); please regrade it"
-            )
-    return asdict(r)
-
-
 def _finish_result(r: Result, item, folder: Path, args, late) -> Result:
     student, path, others = item
     r.file = path.relative_to(folder).as_posix()
@@ -385,9 +359,11 @@ def main(argv: list[str] | None = None) -> int:
             client = Client(cluster)
         try:
             futures = {
-                client.submit(_grade_payload, payload(item), pure=False): item for item in found
+                client.submit(grade_payload, payload(item), pure=False): item for item in found
             }
-            for future in dask_completed(futures):
+            # a generous bound, so that a cluster that cannot run the task never hangs the batch
+            bound = (args.time_limit + 120) * (1 + len(found) // max(1, args.jobs))
+            for future in dask_completed(futures, timeout=bound):
                 item = futures[future]
                 try:
                     data = future.result()
@@ -409,7 +385,7 @@ def main(argv: list[str] | None = None) -> int:
                 cluster.close()
     else:
         with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
-            futures = {pool.submit(_grade_payload, payload(item)): item for item in found}
+            futures = {pool.submit(grade_payload, payload(item)): item for item in found}
             for future in as_completed(futures):  # each row is written as soon as it is graded
                 done(futures[future], future.result())
     out.finish()

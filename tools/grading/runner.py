@@ -17,9 +17,10 @@ import signal
 import subprocess
 import tempfile
 import time
+import traceback
 import types
 import uuid
-from dataclasses import dataclass, field
+from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
 import nbformat
@@ -503,3 +504,33 @@ def grade_notebook(
         result.run_notes.append(UNSANDBOXED_NOTE)
     result.seconds = round(time.monotonic() - start, 1)
     return result
+
+
+def grade_payload(payload: dict) -> dict:
+    """Grade one submission from plain data (runs locally or on a Dask worker).
+
+    ``payload``: ``tests_source``, ``tests_name``, ``student``, ``notebook`` (bytes) and
+    ``options`` (keyword arguments of :func:`grade_notebook`).  Returns ``asdict(Result)``.
+    """
+
+    tests = HiddenTests.from_source(payload["tests_source"], Path(payload["tests_name"]))
+    with tempfile.TemporaryDirectory(prefix="submission-") as tmp:
+        path = Path(tmp) / "submission.ipynb"
+        path.write_bytes(payload["notebook"])
+        try:
+            r = grade_notebook(path, tests, payload["student"], **payload["options"])
+        except BaseException as exc:  # an error barrier: one submission never ends the batch
+            if isinstance(exc, KeyboardInterrupt):
+                raise
+            traceback.print_exc()
+            r = Result(
+                payload["student"],
+                dict.fromkeys(tests.points, 0.0),
+                dict.fromkeys(tests.points, "not graded (grader error)"),
+                status="grader error",
+                sandbox=payload["options"]["mode"],
+            )
+            r.run_notes.append(
+                f"the grader failed on this submission ({type(exc).__name__}); please regrade it"
+            )
+    return asdict(r)
