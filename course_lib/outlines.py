@@ -1,0 +1,871 @@
+"""Real outlines as course curves: TrueType glyphs and SVG path data, and their joints.
+
+Everything else in the course was drawn for the course.  This module reads outlines that
+nobody here drew -- the letters of the fonts matplotlib ships, and SVG path data such as
+matplotlib's toolbar icons -- into the course's one curve type, one
+:class:`~course_lib.curve.PiecewiseBezier` per contour, and classifies every joint.
+
+Reading
+-------
+* :func:`glyph_outline` -- a TrueType glyph (by character or by glyph name) from a font
+  file, read with fontTools from the raw ``glyf`` points.  TrueType contours are
+  quadratic: between two consecutive off-curve points lies an *implied* on-curve point,
+  their midpoint, which is made explicit here.  Units are kept (font units) or
+  normalised to the em (``em=True``, default).  One-point contours (anchors that draw
+  nothing) are skipped and counted; zero-length segments (repeated points) are dropped.
+* :func:`svg_outline` -- SVG path data (``d`` strings: ``M L H V C S Q T A Z``, absolute
+  and relative), parsed by a strict scanner of the SVG 1.1 path grammar that names the
+  offending token and its position.  Elliptical arcs ``A`` are converted to cubics whose
+  distance from the true ellipse is at most ``arc_tolerance`` times its larger radius,
+  or refused (``arcs="refuse"``).
+
+Analysis
+--------
+:func:`classify_joints` computes, for every joint of an outline (the closing joint of a
+closed contour included, as the last joint of that contour), the gap, the tangent
+angle, the signed curvature on both sides and the curvature jump relative to the local
+curvature, all vectorized.  Two verdicts:
+
+* ``g_order`` (-1, 0, 1, 2): the strict G-order with the rule and tolerance of
+  :func:`~course_lib.continuity.joint_continuity` (``rtol = 1e-8``; arc-length
+  characterization, seed 000 §6: unit tangents agree to ``rtol``, curvature vectors to
+  ``rtol`` times ``max(|K_q|, |K_r|, 1/l)``).  Tests check it against the continuity
+  report joint by joint on samples of real glyphs.
+* ``kind`` -- the type designer's view: ``"corner"`` where the tangent turns by more
+  than ``corner_angle`` degrees; otherwise a smooth point, ``"G2"`` if the curvature
+  jump relative to the local curvature is at most ``curvature_rtol``, else ``"G1"``.
+  ``"singular"`` where a side has a vanishing derivative, ``"gap"`` where the pieces do
+  not meet.
+
+:func:`glyph_summary` and :func:`font_summary` count joints, corners, G1 and G2 smooth
+points per glyph and per font.
+
+Lesson: ``notebooks/06_are_letters_smooth.ipynb``.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from functools import lru_cache
+from itertools import pairwise
+from pathlib import Path
+
+import numpy as np
+
+from ._validation import check_finite_scalar
+from .curve import PiecewiseBezier
+
+__all__ = [
+    "KINDS",
+    "Contour",
+    "FontSummary",
+    "GlyphSummary",
+    "JointTable",
+    "Outline",
+    "bundled_fonts",
+    "classify_joints",
+    "font_glyph_names",
+    "font_summary",
+    "glyph_outline",
+    "glyph_summary",
+    "svg_file_outlines",
+    "svg_outline",
+]
+
+#: Joint kinds of :func:`classify_joints`, in this order.
+KINDS = ("gap", "singular", "corner", "G1", "G2")
+
+#: Tolerance of the strict G-order, the default of :func:`~course_lib.continuity.joint_continuity`.
+RTOL = 1e-8
+
+
+# ==================================================================== data types
+@dataclass(frozen=True)
+class Contour:
+    """One contour of an outline.
+
+    Attributes
+    ----------
+    curve : PiecewiseBezier
+        The segments in drawing order.  A closed contour ends where it starts.
+    closed : bool
+        True for a closed contour: it has a *closing joint* (last segment to first),
+        counted as its last joint.
+    implied : ndarray of bool
+        One entry per joint (``n_joints`` of the curve, plus the closing joint): True
+        where the joint is an implied TrueType on-curve point (the midpoint of two
+        off-curve points).  All False for SVG data.
+    """
+
+    curve: PiecewiseBezier
+    closed: bool
+    implied: np.ndarray
+
+    @property
+    def n_joints(self) -> int:
+        """Joints including the closing joint of a closed contour."""
+        return self.curve.n_segments - 1 + int(self.closed)
+
+
+@dataclass(frozen=True)
+class Outline:
+    """An outline: a glyph or an SVG path, as a list of contours.
+
+    Attributes
+    ----------
+    contours : tuple of Contour
+    name : str
+        Glyph name, or ``"svg path"``.
+    source : str
+        Font file or description of the data.
+    scale : float
+        Units per drawing unit: ``units_per_em`` if the glyph was normalised to the em,
+        else 1.
+    skipped : int
+        One-point contours skipped while reading (TrueType anchors that draw nothing).
+    """
+
+    contours: tuple[Contour, ...]
+    name: str
+    source: str = ""
+    scale: float = 1.0
+    skipped: int = 0
+
+    @property
+    def n_joints(self) -> int:
+        return sum(c.n_joints for c in self.contours)
+
+    @property
+    def n_segments(self) -> int:
+        return sum(c.curve.n_segments for c in self.contours)
+
+
+# ==================================================================== TrueType
+_FONT_DIR_PARTS = ("fonts", "ttf")
+
+
+def _font_dir() -> Path:
+    import matplotlib  # lazily: only font reading needs to know where matplotlib's fonts are
+
+    return Path(matplotlib.get_data_path()).joinpath(*_FONT_DIR_PARTS)
+
+
+def bundled_fonts() -> dict[str, Path]:
+    """The TrueType fonts that matplotlib ships, by file stem (``"DejaVuSans"``, ...)."""
+    return {p.stem: p for p in sorted(_font_dir().glob("*.ttf"))}
+
+
+def _resolve_font(font: object) -> Path:
+    if isinstance(font, Path) or (
+        isinstance(font, str) and ("/" in font or font.endswith((".ttf", ".otf")))
+    ):
+        path = Path(font)
+        if not path.is_file():
+            raise ValueError(f"font file {str(path)!r} does not exist")
+        return path
+    if not isinstance(font, str):
+        raise TypeError(f"font must be a font name or a file path, got {type(font).__name__}")
+    fonts = bundled_fonts()
+    key = font.replace(" ", "")
+    if key not in fonts:
+        raise ValueError(
+            f"font {font!r} is not one of matplotlib's bundled fonts; choose one of "
+            f"{', '.join(sorted(fonts))} or pass a file path"
+        )
+    return fonts[key]
+
+
+@lru_cache(maxsize=16)
+def _load_font(path: str):
+    from fontTools.ttLib import TTFont  # lazily: fontTools is needed only to read fonts
+
+    try:
+        font = TTFont(path, lazy=True)
+        glyf, cmap, upem = font["glyf"], font.getBestCmap() or {}, font["head"].unitsPerEm
+        hmtx = font["hmtx"]
+    except Exception as exc:  # fontTools raises many types for a file that is not a font
+        raise ValueError(
+            f"{path!r} is not a TrueType font with quadratic outlines (a 'glyf' table): "
+            f"{type(exc).__name__}: {exc}"
+        ) from None
+    return font, glyf, cmap, float(upem), hmtx
+
+
+def font_glyph_names(font: object = "DejaVuSans") -> list[str]:
+    """All glyph names of a font, in the font's glyph order."""
+    return list(_load_font(str(_resolve_font(font)))[0].getGlyphOrder())
+
+
+def _trim_zero_length(segs: list[np.ndarray], ends: np.ndarray) -> tuple[list, np.ndarray]:
+    keep = [i for i, s in enumerate(segs) if np.ptp(s, axis=0).any()]
+    return [segs[i] for i in keep], ends[keep]
+
+
+def _truetype_contour(p: np.ndarray, on: np.ndarray) -> tuple[list[np.ndarray], np.ndarray]:
+    """Segments of one closed TrueType contour, implied on-curve points explicit.
+
+    The contour starts at its first on-curve point (or, if it has none, at the midpoint
+    of its last and first points), as fontTools' pens draw it.  Returns the segments and,
+    per segment, whether its end point is an implied on-curve point.
+    """
+    n = p.shape[0]
+    off = ~on
+    both_off = off & np.roll(off, -1)  # point i and point i+1 are off-curve
+    mids = 0.5 * (p + np.roll(p, -1, axis=0))
+    # Interleave: point i, then (if both_off[i]) the midpoint of i and i+1.
+    pts = np.empty((2 * n, 2))
+    pts[0::2], pts[1::2] = p, mids
+    flag_on = np.empty(2 * n, bool)
+    flag_on[0::2], flag_on[1::2] = on, True
+    implied = np.zeros(2 * n, bool)
+    implied[1::2] = True
+    keep = np.ones(2 * n, bool)
+    keep[1::2] = both_off
+    pts, flag_on, implied = pts[keep], flag_on[keep], implied[keep]
+    # Start at the first on-curve point, or at the midpoint of the last and first points.
+    start = int(np.argmax(flag_on & ~implied)) if on.any() else pts.shape[0] - 1
+    pts = np.roll(pts, -start, axis=0)
+    flag_on = np.roll(flag_on, -start)
+    implied = np.roll(implied, -start)
+    k = np.flatnonzero(flag_on)
+    k = np.append(k, pts.shape[0])  # the start point again, closing the contour
+    ext = np.vstack([pts, pts[:1]])
+    ext_implied = np.append(implied, implied[0])
+    segs = [ext[a : b + 1] for a, b in pairwise(k)]
+    return segs, ext_implied[k[1:]]
+
+
+def _glyph_name(font, cmap, char, glyph, fontname: str) -> str:
+    if (char is None) == (glyph is None):
+        raise TypeError("give exactly one of char (a character) and glyph (a glyph name)")
+    if glyph is not None:
+        if not isinstance(glyph, str):
+            raise TypeError(f"glyph must be a glyph name (str), got {type(glyph).__name__}")
+        if glyph not in font.getReverseGlyphMap():
+            raise ValueError(f"font {fontname} has no glyph named {glyph!r}")
+        return glyph
+    if not isinstance(char, str) or len(char) != 1:
+        raise ValueError(f"char must be a single character, got {char!r}")
+    name = cmap.get(ord(char))
+    if name is None:
+        raise ValueError(
+            f"font {fontname} has no glyph for the character {char!r} (U+{ord(char):04X})"
+        )
+    return name
+
+
+def glyph_outline(
+    char: str | None = None,
+    font: object = "DejaVuSans",
+    *,
+    glyph: str | None = None,
+    em: bool = True,
+) -> Outline:
+    """Read a TrueType glyph as closed quadratic contours (implied on-curve points explicit).
+
+    Parameters
+    ----------
+    char : str, optional
+        One character, looked up in the font's character map.
+    font : str or path
+        A bundled font by file stem (``"DejaVuSans"``, ``"DejaVu Serif"``,
+        ``"STIXGeneral"``, ... see :func:`bundled_fonts`) or a ``.ttf`` file.
+    glyph : str, optional
+        A glyph name instead of ``char`` (``"at"``, ``"uni01BA"``).
+    em : bool
+        Divide coordinates by the font's units per em (default) or keep font units.
+
+    Returns
+    -------
+    Outline
+        One closed :class:`Contour` per TrueType contour; composite glyphs are
+        decomposed (component transforms applied).
+
+    Raises
+    ------
+    ValueError
+        A character the font lacks, an unknown glyph name or font, a file that is not a
+        TrueType font (naming the file).
+    """
+    path = str(_resolve_font(font))
+    tt, glyf, cmap, upem, hmtx = _load_font(path)
+    name = _glyph_name(tt, cmap, char, glyph, Path(path).stem)
+    return _outline_from_glyf(glyf, hmtx, name, path, upem if em else 1.0)
+
+
+def _outline_from_glyf(glyf, hmtx, name: str, path: str, scale: float) -> Outline:
+    g = glyf[name]
+    coords, end_pts, flags = g.getCoordinates(glyf)
+    P = np.asarray(coords, dtype=float).reshape(-1, 2)
+    # TrueType places the outline so that its left side bearing is hmtx's lsb (the
+    # phantom point pp1 = xMin - lsb is the origin).  Like fontTools' glyph sets (the
+    # reference of the tests), simple glyphs are shifted by lsb - xMin, composites not.
+    if hasattr(g, "xMin") and P.size and not g.isComposite():
+        P[:, 0] += hmtx[name][1] - g.xMin
+    P /= scale
+    on = (np.asarray(flags, dtype=np.uint8) & 1).astype(bool)
+    contours, skipped, start = [], 0, 0
+    for end in end_pts:
+        p, o = P[start : end + 1], on[start : end + 1]
+        start = end + 1
+        segs, implied = _truetype_contour(p, o)
+        segs, implied = _trim_zero_length(segs, implied)
+        if not segs:
+            skipped += 1
+            continue
+        contours.append(Contour(PiecewiseBezier._fast(segs), True, implied))
+    return Outline(tuple(contours), name, path, scale, skipped)
+
+
+# ==================================================================== SVG path data
+_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+_SEPARATORS = " \t\r\n\f,"
+_ARGS = {"M": 2, "L": 2, "H": 1, "V": 1, "C": 6, "S": 4, "Q": 4, "T": 2, "A": 7, "Z": 0}
+
+
+class _Scanner:
+    """Reads numbers, arc flags and command letters from path data, tracking the position."""
+
+    def __init__(self, d: str) -> None:
+        self.d, self.i = d, 0
+
+    def skip(self) -> None:
+        while self.i < len(self.d) and self.d[self.i] in _SEPARATORS:
+            self.i += 1
+
+    def at_number(self) -> bool:
+        self.skip()
+        return self.i < len(self.d) and (self.d[self.i] in "+-." or self.d[self.i].isdigit())
+
+    def number(self, cmd: str, pos: int, flag: bool = False) -> float:
+        self.skip()
+        if self.i >= len(self.d):
+            raise ValueError(
+                f"command {cmd!r} at position {pos} needs {_ARGS[cmd.upper()]} numbers per "
+                "segment; the path data ends before they are all given"
+            )
+        if flag:
+            c = self.d[self.i]
+            if c not in "01":
+                raise ValueError(
+                    f"arc flag {c!r} at position {self.i} (command {cmd!r} at position {pos}) "
+                    "must be 0 or 1"
+                )
+            self.i += 1
+            return float(c)
+        m = _NUMBER.match(self.d, self.i)
+        if m is None:
+            tok = self.d[self.i : self.i + 8].split()[0] if self.d[self.i :].strip() else ""
+            raise ValueError(
+                f"expected a number at position {self.i} for command {cmd!r} at position "
+                f"{pos}, found {tok!r}"
+            )
+        self.i = m.end()
+        return float(m.group())
+
+
+def _tokens(d: str):
+    """Yield ``(command, position, args)`` for every segment command of ``d``."""
+    if not isinstance(d, str):
+        raise TypeError(f"path data must be a str, got {type(d).__name__}")
+    s = _Scanner(d)
+    s.skip()
+    if s.i >= len(d):
+        raise ValueError("path data is empty: no command at position 0")
+    cmd = None
+    while True:
+        s.skip()
+        if s.i >= len(d):
+            return
+        c = d[s.i]
+        if c.upper() in _ARGS:
+            cmd, pos = c, s.i
+            s.i += 1
+        elif s.at_number() and cmd is not None and cmd.upper() != "Z":
+            pos = s.i  # an implicit repetition of the last command
+            cmd = {"M": "L", "m": "l"}.get(cmd, cmd)
+        else:
+            tok = d[s.i :].split()[0][:12] if d[s.i :].strip() else d[s.i]
+            what = "a command letter" if cmd is not None else "a moveto command 'M' or 'm'"
+            raise ValueError(
+                f"unexpected token {tok!r} at position {s.i} in path data: expected {what} "
+                f"(SVG path commands are {' '.join(_ARGS)} and their lower-case forms)"
+            )
+        n = _ARGS[cmd.upper()]
+        flags = (3, 4) if cmd.upper() == "A" else ()
+        args = [s.number(cmd, pos, flag=k in flags) for k in range(n)]
+        yield cmd, pos, args
+
+
+def _arc_segments(p0, rx, ry, phi_deg, large, sweep, p1, tol) -> list[np.ndarray]:
+    """Cubic pieces of an SVG elliptical arc (SVG 1.1 implementation notes F.6.5-F.6.6).
+
+    Each piece spans at most the angle ``h`` whose standard cubic (inner control points at
+    ``k = 4/3 tan(h/4)`` along the tangents) stays within ``tol`` of the unit circle:
+    the radial error of that cubic is at most ``4/27 sin^6(h/4) / cos^2(h/4)`` (Goldapp
+    1991); mapped to the ellipse it is at most that times ``max(rx, ry)``.
+    """
+    if np.allclose(p0, p1, rtol=0, atol=0):
+        return []
+    rx, ry = abs(rx), abs(ry)
+    if rx == 0 or ry == 0:
+        return [np.array([p0, p1])]
+    phi = math.radians(phi_deg % 360.0)
+    c, s = math.cos(phi), math.sin(phi)
+    R = np.array([[c, -s], [s, c]])
+    x1, y1 = R.T @ ((p0 - p1) / 2.0)
+    lam = (x1 / rx) ** 2 + (y1 / ry) ** 2
+    if lam > 1:
+        rx, ry = rx * math.sqrt(lam), ry * math.sqrt(lam)
+    num = max(rx**2 * ry**2 - rx**2 * y1**2 - ry**2 * x1**2, 0.0)
+    coef = math.sqrt(num / (rx**2 * y1**2 + ry**2 * x1**2))
+    if large == sweep:
+        coef = -coef
+    cx1, cy1 = coef * rx * y1 / ry, -coef * ry * x1 / rx
+    center = R @ np.array([cx1, cy1]) + (p0 + p1) / 2.0
+    theta1 = math.atan2((y1 - cy1) / ry, (x1 - cx1) / rx)
+    theta2 = math.atan2((-y1 - cy1) / ry, (-x1 - cx1) / rx)
+    dtheta = theta2 - theta1
+    if sweep and dtheta < 0:
+        dtheta += 2 * math.pi
+    elif not sweep and dtheta > 0:
+        dtheta -= 2 * math.pi
+    n = 1
+    while _arc_error(abs(dtheta) / n) > tol:
+        n += 1
+    t = theta1 + dtheta * np.arange(n + 1) / n
+    k = 4.0 / 3.0 * math.tan(dtheta / n / 4.0)
+    u = np.column_stack([np.cos(t), np.sin(t)])
+    v = np.column_stack([-np.sin(t), np.cos(t)])
+    unit = np.stack([u[:-1], u[:-1] + k * v[:-1], u[1:] - k * v[1:], u[1:]], axis=1)
+    M = R @ np.diag([rx, ry])
+    pieces = unit @ M.T + center
+    pieces[0, 0], pieces[-1, -1] = p0, p1  # exact end points, as the path states them
+    return list(pieces)
+
+
+def _arc_error(h: float) -> float:
+    """Radial error bound of the standard cubic for a unit circular arc of angle ``h``."""
+    return 4.0 / 27.0 * math.sin(h / 4) ** 6 / math.cos(h / 4) ** 2
+
+
+def _svg_subpaths(d: str, arcs: str, tol: float):
+    """Yield ``(segments, closed, position)`` per subpath of ``d``."""
+    cur = np.zeros(2)
+    start = np.zeros(2)
+    segs: list[np.ndarray] = []
+    closed, sub_pos = False, 0
+    prev_ctrl, prev_kind = None, ""
+    started = False
+    for cmd, pos, a in _tokens(d):
+        up, rel = cmd.upper(), cmd.islower()
+        base = cur if rel else np.zeros(2)
+        if not started and up != "M":
+            raise ValueError(
+                f"path data must begin with a moveto 'M' or 'm'; found {cmd!r} at position {pos}"
+            )
+        started = True
+        if up == "M":
+            if segs or sub_pos != pos:
+                if segs:
+                    yield segs, closed, sub_pos
+                elif sub_pos != pos or closed:
+                    raise ValueError(
+                        f"the subpath at position {sub_pos} has only one point: a contour "
+                        "needs at least one segment"
+                    )
+            cur = base + a[:2]
+            start, segs, closed, sub_pos = cur.copy(), [], False, pos
+            prev_kind = ""
+            continue
+        if closed:  # a command after Z starts a new subpath at the same start point
+            yield segs, closed, sub_pos
+            segs, closed, sub_pos = [], False, pos
+        if up == "Z":
+            if not segs:
+                raise ValueError(
+                    f"the subpath at position {sub_pos} has only one point: a contour needs "
+                    f"at least one segment (closepath at position {pos})"
+                )
+            if np.any(cur != start):
+                segs.append(np.array([cur, start]))
+            cur, closed, prev_kind = start.copy(), True, ""
+            continue
+        new: list[np.ndarray]
+        if up == "L":
+            new = [np.array([cur, base + a[:2]])]
+        elif up == "H":
+            new = [np.array([cur, [a[0] + (cur[0] if rel else 0.0), cur[1]]])]
+        elif up == "V":
+            new = [np.array([cur, [cur[0], a[0] + (cur[1] if rel else 0.0)]])]
+        elif up == "C":
+            new = [np.array([cur, base + a[0:2], base + a[2:4], base + a[4:6]])]
+        elif up == "S":
+            c1 = 2 * cur - prev_ctrl if prev_kind == "C" else cur
+            new = [np.array([cur, c1, base + a[0:2], base + a[2:4]])]
+        elif up == "Q":
+            new = [np.array([cur, base + a[0:2], base + a[2:4]])]
+        elif up == "T":
+            c1 = 2 * cur - prev_ctrl if prev_kind == "Q" else cur
+            new = [np.array([cur, c1, base + a[0:2]])]
+        else:  # "A"
+            if arcs == "refuse":
+                raise ValueError(
+                    f"elliptical arc {cmd!r} at position {pos}: arcs are refused "
+                    "(arcs='refuse'); pass arcs='convert' to approximate them by cubics"
+                )
+            new = _arc_segments(cur, a[0], a[1], a[2], a[3], a[4], base + a[5:7], tol)
+        prev_kind = {"C": "C", "S": "C", "Q": "Q", "T": "Q"}.get(up, "")
+        if new:
+            prev_ctrl = new[-1][-2].copy()
+            cur = new[-1][-1].copy()
+        segs.extend(s for s in new if np.ptp(s, axis=0).any())
+    if segs:
+        yield segs, closed, sub_pos
+    elif started:
+        raise ValueError(
+            f"the subpath at position {sub_pos} has only one point: a contour needs at "
+            "least one segment"
+        )
+
+
+def svg_outline(
+    d: str,
+    *,
+    arcs: str = "convert",
+    arc_tolerance: float = 1e-6,
+    name: str = "svg path",
+) -> Outline:
+    """Read SVG path data (a ``d`` attribute) as one contour per subpath.
+
+    Parameters
+    ----------
+    d : str
+        Path data: ``M L H V C S Q T A Z`` and their relative (lower-case) forms, with
+        implicit repetition, as in SVG 1.1 §8.3.
+    arcs : {"convert", "refuse"}
+        Approximate elliptical arcs by cubics (default) or refuse them.
+    arc_tolerance : float
+        Largest distance of an arc's cubics from the true ellipse, relative to the
+        ellipse's larger radius (default 1e-6: a full circle takes 12 cubics).
+    name : str
+        Name of the outline.
+
+    Returns
+    -------
+    Outline
+        A subpath ending with ``Z``/``z`` is a closed contour (a closing line is added
+        when its last point differs from its start).  Zero-length segments are dropped.
+
+    Raises
+    ------
+    ValueError
+        An unknown command letter or stray token, missing numbers, an arc flag other
+        than 0/1, a path not starting with a moveto, a subpath of one point (each naming
+        the token and its position), an arc when ``arcs="refuse"``.
+    """
+    if arcs not in ("convert", "refuse"):
+        raise ValueError(f"arcs must be 'convert' or 'refuse'; got {arcs!r}")
+    tol = check_finite_scalar(arc_tolerance, "arc_tolerance")
+    if not 0 < tol < 0.1:
+        raise ValueError(f"arc_tolerance must be in (0, 0.1); got {tol}")
+    contours = []
+    for segs, closed, _pos in _svg_subpaths(d, arcs, tol):
+        curve = PiecewiseBezier._fast(segs)
+        contours.append(Contour(curve, closed, np.zeros(len(segs) - 1 + closed, bool)))
+    return Outline(tuple(contours), name, "svg path data")
+
+
+def svg_file_outlines(path: object, **kwargs) -> list[Outline]:
+    """One :class:`Outline` per ``<path d="...">`` element of an SVG file.
+
+    Transforms (``transform`` attributes) are not applied: the outlines are in the
+    coordinates of the path data.  Keyword arguments go to :func:`svg_outline`.
+
+    Raises
+    ------
+    ValueError
+        A file that is not XML (naming the file), or bad path data (naming the element).
+    """
+    import xml.etree.ElementTree as ET
+
+    p = Path(path)
+    try:
+        root = ET.parse(p).getroot()
+    except (ET.ParseError, OSError) as exc:
+        raise ValueError(f"{str(p)!r} is not a readable SVG file: {exc}") from None
+    out = []
+    for k, el in enumerate(e for e in root.iter() if e.tag.rsplit("}", 1)[-1] == "path"):
+        d = el.get("d")
+        if d is None:
+            continue
+        ident = el.get("id") or f"path {k}"
+        try:
+            out.append(svg_outline(d, name=f"{p.name}: {ident}", **kwargs))
+        except ValueError as exc:
+            raise ValueError(f"{p.name}, {ident}: {exc}") from None
+    return out
+
+
+# ==================================================================== joint analysis
+@dataclass(frozen=True)
+class JointTable:
+    """Every joint of an outline, one entry per joint (arrays of equal length).
+
+    Attributes
+    ----------
+    contour, joint : ndarray of int
+        Contour index and joint index within it (the closing joint of a closed contour
+        is its last joint).
+    point : ndarray (m, 2)
+        End point of the incoming segment.
+    gap : ndarray
+        Distance between the incoming segment's end and the outgoing segment's start.
+    angle : ndarray
+        Angle in degrees between the incoming and outgoing tangent directions (the
+        geometric tangents: first non-vanishing control-point difference at each end).
+    kappa_in, kappa_out : ndarray
+        Signed curvature at the end of the incoming / the start of the outgoing segment
+        (NaN where that side is singular).
+    rel_jump : ndarray
+        ``|kappa_out - kappa_in| / max(|kappa_in|, |kappa_out|, 1/l)``: the curvature
+        jump relative to the local curvature (``l``: the larger end speed, a length scale
+        of the two pieces).
+    regular : ndarray of bool
+        Both sides have a non-vanishing first derivative.
+    implied : ndarray of bool
+        The joint is an implied TrueType on-curve point.
+    g_order : ndarray of int
+        Strict G-order -1..2 (tolerance ``rtol``, the continuity report's rule).
+    kind : ndarray of str
+        One of :data:`KINDS` (``corner_angle``, ``curvature_rtol`` tolerances).
+    """
+
+    contour: np.ndarray
+    joint: np.ndarray
+    point: np.ndarray
+    gap: np.ndarray
+    angle: np.ndarray
+    kappa_in: np.ndarray
+    kappa_out: np.ndarray
+    rel_jump: np.ndarray
+    regular: np.ndarray
+    implied: np.ndarray
+    g_order: np.ndarray
+    kind: np.ndarray
+    settings: dict = field(default_factory=dict, compare=False)
+
+    def __len__(self) -> int:
+        return int(self.contour.size)
+
+    def counts(self) -> dict[str, int]:
+        """Number of joints of each kind (keys :data:`KINDS`)."""
+        return {k: int(np.count_nonzero(self.kind == k)) for k in KINDS}
+
+
+def _end_data(segs: list[np.ndarray]):
+    """Per segment: start/end points, first and second derivatives, geometric tangents.
+
+    Vectorized over the segments of each degree (seed 000 eq. (8): the end derivatives of
+    a Bézier curve are differences of its end control points).
+    """
+    S = len(segs)
+    out = {k: np.zeros((S, 2)) for k in ("p0", "p1", "a1", "a2", "b1", "b2", "ta", "tb")}
+    scale = np.zeros(S)
+    degrees = np.fromiter((s.shape[0] - 1 for s in segs), int, S)
+    for d in np.unique(degrees):
+        idx = np.flatnonzero(degrees == d)
+        P = np.stack([segs[i] for i in idx])  # (m, d+1, 2)
+        out["p0"][idx], out["p1"][idx] = P[:, 0], P[:, -1]
+        out["a1"][idx] = d * (P[:, 1] - P[:, 0])
+        out["b1"][idx] = d * (P[:, -1] - P[:, -2])
+        if d >= 2:
+            out["a2"][idx] = d * (d - 1) * (P[:, 2] - 2 * P[:, 1] + P[:, 0])
+            out["b2"][idx] = d * (d - 1) * (P[:, -1] - 2 * P[:, -2] + P[:, -3])
+        scale[idx] = d * np.ptp(P, axis=1).max(axis=1)
+        # Geometric tangent: the first non-zero difference from each end.
+        ta = P[:, 1:] - P[:, :1]
+        tb = P[:, -1:] - P[:, -2::-1]
+        for name, D in (("ta", ta), ("tb", tb)):
+            nz = np.linalg.norm(D, axis=2) > 0
+            first = np.argmax(nz, axis=1)
+            out[name][idx] = D[np.arange(idx.size), first]
+    return out, scale
+
+
+def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
+
+
+def classify_joints(
+    outline: Outline,
+    *,
+    corner_angle: float = 1.0,
+    curvature_rtol: float = RTOL,
+    rtol: float = RTOL,
+) -> JointTable:
+    """Classify every joint of an outline (vectorized).
+
+    Parameters
+    ----------
+    outline : Outline
+    corner_angle : float
+        Tangent angle in degrees above which a joint is a corner (default 1°: font
+        outlines live on an integer grid, so designers' smooth points that are not
+        implied midpoints turn by up to a few hundredths of a degree).
+    curvature_rtol : float
+        A smooth point is ``"G2"`` when its relative curvature jump is at most this.
+    rtol : float
+        Tolerance of the strict ``g_order`` (the continuity report's default).
+
+    Returns
+    -------
+    JointTable
+    """
+    if not isinstance(outline, Outline):
+        raise TypeError(f"outline must be an Outline, got {type(outline).__name__}")
+    corner_angle = check_finite_scalar(corner_angle, "corner_angle")
+    curvature_rtol = check_finite_scalar(curvature_rtol, "curvature_rtol")
+    rtol = check_finite_scalar(rtol, "rtol")
+    if not 0 <= corner_angle < 180:
+        raise ValueError(f"corner_angle must be in [0, 180) degrees; got {corner_angle}")
+    if curvature_rtol < 0 or rtol < 0:
+        raise ValueError("curvature_rtol and rtol must be >= 0")
+    segs: list[np.ndarray] = []
+    q_idx, r_idx, cont, jnt, impl = [], [], [], [], []
+    for ci, c in enumerate(outline.contours):
+        S, base = c.curve.n_segments, len(segs)
+        segs.extend(c.curve.segments)
+        J = c.n_joints
+        q = base + np.arange(J)
+        q_idx.append(q)
+        r_idx.append(base + (np.arange(J) + 1) % S)
+        cont.append(np.full(J, ci))
+        jnt.append(np.arange(J))
+        impl.append(np.asarray(c.implied, bool))
+    if not segs or not sum(len(x) for x in q_idx):
+        e, i, b = np.zeros(0), np.zeros(0, int), np.zeros(0, bool)
+        return JointTable(i, i, np.zeros((0, 2)), e, e, e, e, e, b, b, i, e.astype(str))
+    data, scale = _end_data(segs)
+    qi, ri = np.concatenate(q_idx), np.concatenate(r_idx)
+    dq1, dq2, dr1, dr2 = data["b1"][qi], data["b2"][qi], data["a1"][ri], data["a2"][ri]
+    vq, vr = np.linalg.norm(dq1, axis=1), np.linalg.norm(dr1, axis=1)
+    regular = (vq > 1e-10 * scale[qi]) & (vr > 1e-10 * scale[ri])
+    ell = np.maximum(vq, vr)
+    gap = np.linalg.norm(data["p0"][ri] - data["p1"][qi], axis=1)
+    tq, tr = data["tb"][qi], data["ta"][ri]
+    nq, nr = np.linalg.norm(tq, axis=1), np.linalg.norm(tr, axis=1)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        Tq, Tr = tq / nq[:, None], tr / nr[:, None]
+        angle = np.degrees(np.arctan2(np.abs(_cross(Tq, Tr)), np.einsum("ij,ij->i", Tq, Tr)))
+        kq = np.where(regular, _cross(dq1, dq2) / vq**3, np.nan)
+        kr = np.where(regular, _cross(dr1, dr2) / vr**3, np.nan)
+        denom = np.maximum.reduce([np.abs(kq), np.abs(kr), 1.0 / ell])
+        rel = np.abs(kr - kq) / denom
+    # Strict G-order, the continuity report's arc-length rule (seed 000 §6).
+    g = np.where(gap > rtol * ell, -1, 0)
+    g1 = (g == 0) & regular & (np.linalg.norm(Tq - Tr, axis=1) <= rtol)
+    g = np.where(g1, 1, g)
+    g = np.where(g1 & (rel <= rtol), 2, g)
+    kind = np.full(qi.size, "G1", dtype="<U8")
+    kind[rel <= curvature_rtol] = "G2"
+    kind[angle > corner_angle] = "corner"
+    kind[~regular] = "singular"
+    kind[gap > rtol * np.maximum(ell, scale[qi])] = "gap"
+    return JointTable(
+        np.concatenate(cont),
+        np.concatenate(jnt),
+        data["p1"][qi],
+        gap,
+        angle,
+        kq,
+        kr,
+        rel,
+        regular,
+        np.concatenate(impl),
+        g.astype(int),
+        kind,
+        {"corner_angle": corner_angle, "curvature_rtol": curvature_rtol, "rtol": rtol},
+    )
+
+
+# ==================================================================== summaries
+@dataclass(frozen=True)
+class GlyphSummary:
+    """Counts of one outline's joints: ``joints = corners + g1 + g2 + singular + gaps``."""
+
+    name: str
+    contours: int
+    joints: int
+    corners: int
+    g1: int
+    g2: int
+    singular: int
+    gaps: int
+
+    @property
+    def smooth(self) -> int:
+        """Smooth points (G1 or G2)."""
+        return self.g1 + self.g2
+
+
+def glyph_summary(outline: Outline, **kwargs) -> GlyphSummary:
+    """Count an outline's corners and G1 / G2 smooth points (keywords: :func:`classify_joints`)."""
+    c = classify_joints(outline, **kwargs).counts()
+    return GlyphSummary(
+        outline.name,
+        len(outline.contours),
+        sum(c.values()),
+        c["corner"],
+        c["G1"],
+        c["G2"],
+        c["singular"],
+        c["gap"],
+    )
+
+
+@dataclass(frozen=True)
+class FontSummary:
+    """Per-glyph summaries of a whole font, and their totals."""
+
+    font: str
+    glyphs: tuple[GlyphSummary, ...]
+
+    def total(self, name: str) -> int:
+        """Sum of one count (``"joints"``, ``"corners"``, ``"g1"``, ``"g2"``, ...) over glyphs."""
+        return sum(getattr(g, name) for g in self.glyphs)
+
+    @property
+    def g2_share(self) -> float:
+        """Share of the smooth points that are G2."""
+        smooth = self.total("smooth")
+        return self.total("g2") / smooth if smooth else float("nan")
+
+    def __str__(self) -> str:
+        keys = ("joints", "corners", "g1", "g2", "singular", "gaps")
+        counts = ", ".join(f"{k} {self.total(k)}" for k in keys)
+        return (
+            f"{self.font}: {len(self.glyphs)} glyphs, {counts}; "
+            f"G2 share of smooth points {self.g2_share:.1%}"
+        )
+
+
+def font_summary(
+    font: object = "DejaVuSans", glyphs: list[str] | None = None, **kwargs
+) -> FontSummary:
+    """Classify every joint of every glyph of a font (or of the named ``glyphs``).
+
+    Keyword arguments go to :func:`classify_joints`; glyphs without contours (space,
+    ...) are counted with zero joints.
+    """
+    path = str(_resolve_font(font))
+    tt, glyf, _cmap, upem, hmtx = _load_font(path)
+    names = tt.getGlyphOrder() if glyphs is None else list(glyphs)
+    return FontSummary(
+        Path(path).stem,
+        tuple(
+            glyph_summary(_outline_from_glyf(glyf, hmtx, n, path, upem), **kwargs) for n in names
+        ),
+    )
