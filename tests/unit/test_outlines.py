@@ -488,3 +488,16 @@ def test_bundled_fonts_are_found():
     fonts = bundled_fonts()
     assert {"DejaVuSans", "DejaVuSerif", "STIXGeneral"} <= set(fonts)
     assert glyph_outline("a", font="DejaVu Serif").source.endswith("DejaVuSerif.ttf")
+
+
+def test_benchmark_item_runs_on_tiny_sizes(monkeypatch):
+    from pathlib import Path
+
+    bench = Path(__file__).resolve().parents[2] / "benchmarks"
+    monkeypatch.syspath_prepend(str(bench))
+    import bench_common
+    import bench_outlines
+
+    (row,) = bench_outlines.run(bench_common.TINY)
+    assert row.item == "7" and row.ours > 0 and row.reference > 0
+    assert row.extra["glyphs"] == 40 and row.extra["joints"] > 0
