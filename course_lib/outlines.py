@@ -54,7 +54,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ._validation import check_finite_scalar
+from ._validation import as_points, check_finite_scalar
 from .curve import PiecewiseBezier
 
 __all__ = [
@@ -72,6 +72,8 @@ __all__ = [
     "glyph_summary",
     "svg_file_outlines",
     "svg_outline",
+    "truetype_contour",
+    "truetype_outline",
 ]
 
 #: Joint kinds of :func:`classify_joints`, in this order.
@@ -125,6 +127,9 @@ class Outline:
         else 1.
     skipped : int
         One-point contours skipped while reading (TrueType anchors that draw nothing).
+    points : tuple of (ndarray (n, 2), ndarray of bool (n,))
+        For TrueType outlines: the raw points of each contour and their on-curve flags
+        (the data :func:`truetype_outline` rebuilds the contours from); empty for SVG.
     """
 
     contours: tuple[Contour, ...]
@@ -132,6 +137,7 @@ class Outline:
     source: str = ""
     scale: float = 1.0
     skipped: int = 0
+    points: tuple = ()
 
     @property
     def n_joints(self) -> int:
@@ -237,6 +243,56 @@ def _truetype_contour(p: np.ndarray, on: np.ndarray) -> tuple[list[np.ndarray], 
     return segs, ext_implied[k[1:]]
 
 
+def truetype_contour(points: object, on_curve: object) -> Contour:
+    """One closed TrueType contour from its points and on-curve flags.
+
+    Between two consecutive off-curve points the implied on-curve point (their midpoint)
+    is made explicit; zero-length segments (repeated points) are dropped.
+
+    Parameters
+    ----------
+    points : array_like (n, 2)
+    on_curve : array_like of bool (n,)
+
+    Raises
+    ------
+    ValueError
+        Fewer than 2 points, flags of the wrong length, or a contour whose points all
+        coincide (it draws nothing).
+    """
+    P = as_points(points, "points", min_points=2, dims=(2,))
+    on = np.asarray(on_curve, dtype=bool).ravel()
+    if on.shape[0] != P.shape[0]:
+        raise ValueError(
+            f"on_curve must have one flag per point: {P.shape[0]} points, {on.shape[0]} flags"
+        )
+    segs, implied = _trim_zero_length(*_truetype_contour(P, on))
+    if not segs:
+        raise ValueError("the contour's points all coincide: it has no segment to draw")
+    return Contour(PiecewiseBezier._fast(segs), True, implied)
+
+
+def truetype_outline(
+    points: object, *, name: str = "truetype", source: str = "", scale: float = 1.0
+) -> Outline:
+    """An :class:`Outline` from raw TrueType contours: a sequence of ``(points, on_curve)``.
+
+    This is how a glyph is rebuilt after one of its points moved (the demo drags
+    off-curve points); :func:`glyph_outline` reads the same data from a font.
+    """
+    pts = tuple(
+        (as_points(p, f"points of contour {k}", min_points=2, dims=(2,)), np.asarray(o, bool))
+        for k, (p, o) in enumerate(points)
+    )
+    contours = []
+    for k, (p, o) in enumerate(pts):
+        try:
+            contours.append(truetype_contour(p, o))
+        except ValueError as exc:
+            raise ValueError(f"contour {k}: {exc}") from None
+    return Outline(tuple(contours), name, source, scale, 0, pts)
+
+
 def _glyph_name(font, cmap, char, glyph, fontname: str) -> str:
     if (char is None) == (glyph is None):
         raise TypeError("give exactly one of char (a character) and glyph (a glyph name)")
@@ -306,7 +362,7 @@ def _outline_from_glyf(glyf, hmtx, name: str, path: str, scale: float) -> Outlin
         P[:, 0] += hmtx[name][1] - g.xMin
     P /= scale
     on = (np.asarray(flags, dtype=np.uint8) & 1).astype(bool)
-    contours, skipped, start = [], 0, 0
+    contours, raw, skipped, start = [], [], 0, 0
     for end in end_pts:
         p, o = P[start : end + 1], on[start : end + 1]
         start = end + 1
@@ -316,7 +372,8 @@ def _outline_from_glyf(glyf, hmtx, name: str, path: str, scale: float) -> Outlin
             skipped += 1
             continue
         contours.append(Contour(PiecewiseBezier._fast(segs), True, implied))
-    return Outline(tuple(contours), name, path, scale, skipped)
+        raw.append((p, o))
+    return Outline(tuple(contours), name, path, scale, skipped, tuple(raw))
 
 
 # ==================================================================== SVG path data

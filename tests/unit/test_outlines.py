@@ -28,6 +28,8 @@ from course_lib.outlines import (
     glyph_summary,
     svg_file_outlines,
     svg_outline,
+    truetype_contour,
+    truetype_outline,
 )
 
 FONTS = ("DejaVuSans", "DejaVuSerif", "DejaVuSansMono", "STIXGeneral", "cmr10")
@@ -501,3 +503,104 @@ def test_benchmark_item_runs_on_tiny_sizes(monkeypatch):
     (row,) = bench_outlines.run(bench_common.TINY)
     assert row.item == "7" and row.ours > 0 and row.reference > 0
     assert row.extra["glyphs"] == 40 and row.extra["joints"] > 0
+
+
+def test_truetype_outline_rebuilds_a_glyph_from_its_points():
+    g = glyph_outline("S")
+    again = truetype_outline(g.points)
+    for a, b in zip(g.contours, again.contours, strict=True):
+        for s, t in zip(a.curve.segments, b.curve.segments, strict=True):
+            assert np.array_equal(s, t)
+    # Two off-curve points only: the contour is two quadratics through the two implied
+    # midpoints (0.5, 0) and (0.5, 0): it starts at the midpoint of the last and first.
+    c = truetype_contour([[0.0, 1.0], [1.0, -1.0]], [False, False])
+    assert c.implied.tolist() == [True, True]
+    assert np.array_equal(c.curve.segments[0], [[0.5, 0.0], [0.0, 1.0], [0.5, 0.0]])
+
+
+@pytest.mark.parametrize(
+    ("points", "flags", "message"),
+    [
+        ([[0.0, 0.0]], [True], "at least 2 points"),
+        ([[0.0, 0.0], [1.0, 1.0]], [True], "one flag per point"),
+        ([[1.0, 1.0], [1.0, 1.0]], [True, False], "all coincide"),
+        ([[0.0, np.nan], [1.0, 1.0]], [True, True], "finite"),
+    ],
+)
+def test_truetype_contour_bad_input(points, flags, message):
+    with pytest.raises(ValueError, match=message):
+        truetype_contour(points, flags)
+
+
+# ------------------------------------------------------------------ plotting and the demo
+def _mouse(canvas, kind, xy_px, button=1):
+    from matplotlib.backend_bases import MouseEvent
+
+    ev = MouseEvent(kind, canvas, float(xy_px[0]), float(xy_px[1]), button=button)
+    canvas.callbacks.process(kind, ev)
+
+
+def test_plot_outline_marks_every_joint_by_kind_and_updates_in_place():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+
+    from course_lib.plotting import plot_outline
+
+    out = glyph_outline("g")
+    fig = Figure()
+    ax = fig.add_subplot()
+    art = plot_outline(ax, out)
+    t = classify_joints(out)
+    for kind, line in art.marks.items():
+        x, y = line.get_data()
+        assert np.array_equal(np.column_stack([x, y]), t.point[t.kind == kind])
+    assert sum(len(line.get_xdata()) for line in art.marks.values()) == len(t)
+    assert len(art.curves) == len(art.combs) == len(out.contours)
+    # Teeth of one comb scale for every contour: tooth length = scale * |curvature|.
+    teeth = art.combs[0].tooth_array()
+    assert np.all(np.linalg.norm(teeth[:, 1] - teeth[:, 0], axis=1) >= 0)
+    assert art.comb_scale == art.combs[1].scale
+    with pytest.raises(ValueError, match="marks must be among"):
+        plot_outline(ax, out, marks=("bumps",))
+
+
+def test_glyph_demo_drag_changes_comb_and_report():
+    from course_lib.widgets import glyph_demo
+
+    demo = glyph_demo("O", static=False)
+    st = demo.state
+    assert st.counts()["corner"] == 0 and "cl-joint-report" in demo.report.value
+    before = demo.view.artists.combs[0].tooth_array().copy()
+    P = st.offcurve_points()
+    st.drag(0, P[0, 0] + 0.05, P[0, 1] + 0.05)
+    after = demo.view.artists.combs[0].tooth_array()
+    assert not np.allclose(before, after)
+    assert "joints next to the moved point" in demo.report.value
+    assert np.allclose(st.offcurve_points()[0], P[0] + 0.05)
+    # Dragging with the mouse through the canvas moves the same point.
+    canvas = demo.figure.canvas
+    demo.figure.canvas.draw()
+    ax = demo.view.ax
+    start = ax.transData.transform(st.offcurve_points()[1])
+    _mouse(canvas, "button_press_event", start)
+    _mouse(canvas, "motion_notify_event", start + np.array([0.0, 20.0]))
+    _mouse(canvas, "button_release_event", start + np.array([0.0, 20.0]))
+    assert st.offcurve_points()[1, 1] > P[1, 1]
+    # Another character and font: new artists; a missing character shows a warning.
+    demo.controls["char"].value = "g"
+    assert st.outline.name == "g" and st.counts()["corner"] > 0
+    demo.controls["font"].value = "DejaVuSerif"
+    assert st.font == "DejaVuSerif"
+    demo.controls["char"].value = "\u2fff"
+    assert "no glyph for the character" in demo.warning.value and st.outline.name == "g"
+
+
+def test_glyph_demo_static_figure():
+    from course_lib.widgets import glyph_demo
+
+    demo = glyph_demo("@", static=True)
+    assert demo.widget is None and "image/png" in demo._repr_mimebundle_()
+    with pytest.raises(ValueError, match="no glyph for the character"):
+        glyph_demo("\u2fff", static=True)
