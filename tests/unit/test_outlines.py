@@ -103,6 +103,50 @@ def test_control_points_agree_with_fonttools_pens(font, name):
             assert np.max(np.abs(s - t / upem)) <= EM_TOL
 
 
+@pytest.mark.parametrize(("font", "name"), SAMPLE[1::4] + LETTERS)
+def test_on_and_off_curve_points_agree_with_fonttools_recording_pen(font, name):
+    """fontTools' RecordingPen keeps TrueType's own form (qCurveTo with several off-curve
+    points and implicit midpoints): its off-curve points are our quadratics' middle
+    control points, and its on-curve points our non-implied joints, in order."""
+    from fontTools.pens.recordingPen import DecomposingRecordingPen
+
+    from course_lib.outlines import _load_font, _resolve_font
+
+    gs = _load_font(str(_resolve_font(font)))[0].getGlyphSet()
+    pen = DecomposingRecordingPen(gs)
+    gs[name].draw(pen)
+    off, on, contours = [], [], []
+    for op, args in pen.value:
+        if op == "moveTo":
+            off, on = [], [args[0]]
+        elif op == "lineTo":
+            on.append(args[0])
+        elif op == "qCurveTo":
+            off += args[:-1]
+            on += [] if args[-1] is None else [args[-1]]
+        elif op in ("closePath", "endPath"):
+            if off or len(on) > 1:
+                contours.append((np.array(off, float), np.array(on, float)))
+            off, on = [], []
+    got = glyph_outline(font=font, glyph=name, em=False)
+    if any((p == np.roll(p, 1, axis=0)).all(axis=1).any() for p, _ in got.points):
+        pytest.skip("repeated points: zero-length segments were dropped")
+    assert len(got.contours) == len(contours)
+    for c, (off_, on_) in zip(got.contours, contours, strict=True):
+        segs = c.curve.segments
+        ends = [s[-1] for s, i in zip(segs, c.implied, strict=True) if not i]
+        start = [] if c.implied[-1] else [segs[0][0]]  # all off-curve: no on-curve point
+        mine_on = np.array([*start, *ends]).reshape(-1, 2)
+        mine_off = np.array([s[1] for s in segs if s.shape[0] == 3]).reshape(-1, 2)
+        assert np.array_equal(mine_off, off_.reshape(-1, 2))
+        assert np.array_equal(_open(mine_on), _open(on_.reshape(-1, 2)))
+
+
+def _open(P: np.ndarray) -> np.ndarray:
+    """Drop a final point equal to the first (a closed list of on-curve points)."""
+    return P[:-1] if len(P) > 1 and np.array_equal(P[0], P[-1]) else P
+
+
 def _upem(font: str) -> float:
     from course_lib.outlines import _load_font, _resolve_font
 
