@@ -83,6 +83,7 @@ class OutlineArtists:
         """Redraw for a changed outline with the same contours and segment counts."""
         for art, c in zip(self.curves, outline.contours, strict=True):
             art.update(c.curve)
+            art.segments.set_color(OKABE_ITO["black"])  # update() alternates the colours
         for art, c in zip(self.combs, outline.contours, strict=False):
             art.update(c.curve)
         self.table = classify_joints(outline, **self.classify)

@@ -623,6 +623,7 @@ def test_glyph_demo_drag_changes_comb_and_report():
     assert not np.allclose(before, after)
     assert "joints next to the moved point" in demo.report.value
     assert np.allclose(st.offcurve_points()[0], P[0] + 0.05)
+    assert len({tuple(c) for c in demo.view.artists.curves[0].segments.get_colors()}) == 1
     # Dragging with the mouse through the canvas moves the same point.
     canvas = demo.figure.canvas
     demo.figure.canvas.draw()
