@@ -152,9 +152,14 @@ _FONT_DIR_PARTS = ("fonts", "ttf")
 
 
 def _font_dir() -> Path:
-    import matplotlib  # lazily: only font reading needs to know where matplotlib's fonts are
+    """matplotlib's ``mpl-data/fonts/ttf``, found without importing matplotlib (a math
+    module imports no plotting library)."""
+    from importlib.util import find_spec
 
-    return Path(matplotlib.get_data_path()).joinpath(*_FONT_DIR_PARTS)
+    spec = find_spec("matplotlib")
+    if spec is None or not spec.submodule_search_locations:
+        raise ValueError("matplotlib is not installed: its bundled fonts are not available")
+    return Path(spec.submodule_search_locations[0], "mpl-data", *_FONT_DIR_PARTS)
 
 
 def bundled_fonts() -> dict[str, Path]:
