@@ -536,7 +536,7 @@ def _svg_subpaths(d: str, arcs: str, tol: float):
     cur = np.zeros(2)
     start = np.zeros(2)
     segs: list[np.ndarray] = []
-    closed, sub_pos = False, 0
+    closed, sub_pos = False, None
     prev_ctrl, prev_kind = None, ""
     started = False
     for cmd, pos, a in _tokens(d):
@@ -548,14 +548,13 @@ def _svg_subpaths(d: str, arcs: str, tol: float):
             )
         started = True
         if up == "M":
-            if segs or sub_pos != pos:
-                if segs:
-                    yield segs, closed, sub_pos
-                elif sub_pos != pos or closed:
-                    raise ValueError(
-                        f"the subpath at position {sub_pos} has only one point: a contour "
-                        "needs at least one segment"
-                    )
+            if segs:
+                yield segs, closed, sub_pos
+            elif sub_pos is not None:  # the previous moveto drew nothing
+                raise ValueError(
+                    f"the subpath at position {sub_pos} has only one point: a contour "
+                    "needs at least one segment"
+                )
             cur = base + a[:2]
             start, segs, closed, sub_pos = cur.copy(), [], False, pos
             prev_kind = ""

@@ -326,6 +326,13 @@ def test_h_v_and_implicit_lineto():
     assert np.array_equal(P, [[1, 1], [2, 1], [3, 1], [3, 3], [2, 3], [1, 3], [1, 1]])
 
 
+def test_leading_whitespace_and_compact_numbers():
+    (c,) = svg_outline("  \n M0,0L1-1.5.5 1e1-2z").contours
+    assert np.array_equal(c.curve.segments[1], [[1, -1.5], [0.5, 10]])
+    (c,) = svg_outline("M0 0 a1 1 0 1010 0").contours  # compact arc flags: 1, 0, then 10 0
+    assert np.array_equal(c.curve.segments[-1][-1], [10, 0])
+
+
 def test_several_subpaths_and_command_after_close():
     out = svg_outline("M0 0 L1 0 L1 1 Z L 0 1 M 5 5 L 6 6")
     assert [c.closed for c in out.contours] == [True, False, False]
