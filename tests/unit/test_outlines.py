@@ -327,7 +327,7 @@ def test_h_v_and_implicit_lineto():
 
 
 def test_leading_whitespace_and_compact_numbers():
-    (c,) = svg_outline("  \n M0,0L1-1.5.5 1e1-2z").contours
+    (c,) = svg_outline("  \n M0,0L1-1.5.5 1e1z").contours
     assert np.array_equal(c.curve.segments[1], [[1, -1.5], [0.5, 10]])
     (c,) = svg_outline("M0 0 a1 1 0 1010 0").contours  # compact arc flags: 1, 0, then 10 0
     assert np.array_equal(c.curve.segments[-1][-1], [10, 0])
