@@ -736,6 +736,10 @@ def font_summary(
     path = str(_resolve_font(font))
     tt, glyf, _cmap, upem, hmtx = _load_font(path)
     names = tt.getGlyphOrder() if glyphs is None else list(glyphs)
+    known = tt.getReverseGlyphMap()
+    missing = [n for n in names if n not in known]
+    if missing:
+        raise ValueError(f"font {Path(path).stem} has no glyph named {missing[0]!r}")
     outs = [_outline_from_glyf(glyf, hmtx, n, path, upem) for n in names]
     # One classification of all contours at once (vectorized), then counts per glyph.
     merged = Outline(tuple(c for o in outs for c in o.contours), "all glyphs", path)

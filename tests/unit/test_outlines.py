@@ -492,6 +492,8 @@ def test_bad_font_input(tmp_path):
         glyph_outline("\u2fff")
     with pytest.raises(ValueError, match="no glyph named 'no-such-glyph'"):
         glyph_outline(glyph="no-such-glyph")
+    with pytest.raises(ValueError, match="DejaVuSans has no glyph named 'nope'"):
+        font_summary(glyphs=["a", "nope"])
     with pytest.raises(ValueError, match="single character"):
         glyph_outline("ab")
     with pytest.raises(TypeError, match="exactly one of char"):
