@@ -16,7 +16,9 @@ reference is measured in the same run):
 3. symbolic Beta-constraints n = 1..8 (cold caches) vs sympy's Bell polynomials;
 4. widget update latency (compute + Agg redraw), from ``widget_latency.py``;
 5. ``import course_lib`` time vs ``import numpy`` and the heavy-package check;
-6. nbval time per notebook and for the whole notebook suite.
+6. nbval time per notebook and for the whole notebook suite;
+7. every joint of every glyph of DejaVu Sans classified (``bench_outlines.py``) vs the
+   continuity report per joint.
 
 Nothing here is a test: the numbers depend on the machine and its load.  The
 harness itself is smoke-tested by ``tests/test_benchmarks_smoke.py``.
@@ -41,6 +43,7 @@ import bench_beta_constraints  # noqa: E402
 import bench_evaluation  # noqa: E402
 import bench_import  # noqa: E402
 import bench_notebooks  # noqa: E402
+import bench_outlines  # noqa: E402
 import bench_widgets  # noqa: E402
 from bench_common import (  # noqa: E402
     FULL,
@@ -58,6 +61,7 @@ ITEMS = {
     "beta_constraints": bench_beta_constraints.run,
     "widgets": bench_widgets.run,
     "import": bench_import.run,
+    "outlines": bench_outlines.run,
 }
 
 

@@ -31,6 +31,7 @@ from .curvature import (
     plot_curvature_profile,
 )
 from .curves import CurveArtists, PointsArtists, plot_control_polygon, plot_curve
+from .outlines import OutlineArtists, plot_outline
 from .style import COURSE_RC, OKABE_ITO, ROLE_COLORS, course_style, new_figure, segment_color
 from .surfaces3d import PatchPairArtists, plot_patch, plot_patch_pair
 from .vectors import (
@@ -54,6 +55,7 @@ __all__ = [
     "Diagram",
     "FrameArtists",
     "OsculatingCircleArtists",
+    "OutlineArtists",
     "PatchPairArtists",
     "PointsArtists",
     "VectorArtists",
@@ -72,6 +74,7 @@ __all__ = [
     "plot_g1_stitch",
     "plot_knot_joint_construction",
     "plot_osculating_circle",
+    "plot_outline",
     "plot_patch",
     "plot_patch_pair",
     "plot_stitching",

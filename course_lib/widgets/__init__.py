@@ -30,12 +30,14 @@ from .demos import (
     reparametrization_demo,
 )
 from .interactor import PointDragger
+from .outlines import GlyphDemoState, glyph_demo
 from .reparam import ReparametrizationState
 
 __all__ = [
     "CurveDemoState",
     "CurveDemoView",
     "Demo",
+    "GlyphDemoState",
     "PointDragger",
     "ReparametrizationState",
     "SliderSpec",
@@ -43,6 +45,7 @@ __all__ = [
     "catmull_rom_demo",
     "curvature_comb_demo",
     "g2_stitch_demo",
+    "glyph_demo",
     "joint_report",
     "knot_spline_demo",
     "quartic_beta_spline_demo",
