@@ -9,7 +9,7 @@ STAMP  := $(VENV)/.installed
 # JupyterLab refuses to run as root without this flag (containers, CI machines)
 ALLOW_ROOT := $(if $(filter 0,$(shell id -u)),--allow-root,)
 
-.PHONY: install lab test lint bench grade clean
+.PHONY: install lab test lint bench grade submit release clean
 
 $(STAMP): pyproject.toml constraints.txt
 	$(PYTHON) -m venv $(VENV)
@@ -41,6 +41,15 @@ grade: install
 	@test -n "$(SUBMISSIONS)" || (echo "usage: make grade HW=hw01 SUBMISSIONS=DIR [OUT=DIR]"; exit 2)
 	$(BIN)/python tools/grade.py --tests solutions/hidden_tests/$(HW).py \
 	    --submissions $(SUBMISSIONS) --out $(OUT) --jobs 2
+
+# make submit HW=hw01 STUDENT=your-id   (runs the homework fresh, writes submissions/hw01-ID.ipynb)
+submit: install
+	@test -n "$(STUDENT)" || (echo "usage: make submit HW=hw01 STUDENT=your-id"; exit 2)
+	$(BIN)/python -m course_lib.submit $(firstword $(wildcard exercises/$(HW)_*.ipynb)) --student $(STUDENT)
+
+# make release: the student edition in dist/student-edition/ and dist/student-edition.zip
+release: install
+	$(BIN)/python tools/release.py --out dist/student-edition
 
 clean:
 	rm -rf $(VENV) test-artifacts

@@ -167,3 +167,25 @@ def submit(
     target = target_dir / f"{homework}-{student}.ipynb"
     nbformat.write(nb, target)
     return Submission(target, student, homework, failed)
+
+
+def main(argv: list[str] | None = None) -> int:
+    """``python -m course_lib.submit NOTEBOOK --student ID`` (what ``make submit`` runs)."""
+    import argparse
+
+    p = argparse.ArgumentParser(description="Run a homework notebook fresh and write its submission.")
+    p.add_argument("notebook")
+    p.add_argument("--student", default=None, help="your student id (or COURSE_STUDENT_ID)")
+    p.add_argument("--out-dir", default=None)
+    args = p.parse_args(argv)
+    try:
+        result = submit(args.notebook, args.student, out_dir=args.out_dir)
+    except ValueError as exc:
+        print(f"submit: {exc}")
+        return 2
+    print(result)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

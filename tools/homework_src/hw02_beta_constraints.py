@@ -225,3 +225,15 @@ report = check_all(globals(), HOMEWORK)
 assert report.all_passed, report
 ### END SOLUTION
 report
+
+# %% [markdown]
+# ## Hand in
+#
+# Save the notebook, then hand it in with **one** of these (use your student id):
+#
+# * in a terminal, from the course folder: `make submit HW=hw02 STUDENT=your-id`
+# * in a new cell here: `from course_lib.submit import submit; submit("hw02_beta_constraints.ipynb", student="your-id")`
+#
+# Either runs the notebook top to bottom in a fresh kernel, as the grader will, lists the cells that
+# fail, and writes `submissions/hw02-your-id.ipynb`. Upload that file. The checks above are feedback;
+# your grade comes from the grader's own tests with other data.

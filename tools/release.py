@@ -1,0 +1,157 @@
+"""Build the student edition: what a class gets, and nothing an instructor keeps.
+
+Usage::
+
+    python tools/release.py --out dist/student-edition     # also writes dist/student-edition.zip
+
+The edition holds the lecture notebooks (``notebooks/``), the blank homework (``exercises/``),
+the installable ``course_lib`` package, ``pyproject.toml``, ``constraints.txt``,
+``environment.yml`` (Binder-ready on its own), a student ``README.md`` and a small ``Makefile``
+(``make lab`` installs and opens the course; ``make submit HW=hw01 STUDENT=id`` hands in).
+It holds **no** solution notebook, hidden test, homework source, test or test fixture: it is built
+from an allow-list, and ``tests/test_release.py`` greps the result for solution markers,
+hidden-test names and the hidden tests' data.
+"""
+
+from __future__ import annotations
+
+import argparse
+import shutil
+import sys
+import zipfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+MARK = ".student-edition"
+
+# what goes in, relative to the checkout (an allow-list: nothing else is copied)
+INCLUDE_FILES = ["pyproject.toml", "constraints.txt", "environment.yml", "LICENSE"]
+INCLUDE_GLOBS = ["notebooks/*.ipynb", "exercises/*.ipynb", "course_lib/**/*.py",
+                 "course_lib/**/*.json"]
+
+STUDENT_README = """# Geometric continuity of parametric curves — student edition
+
+Lectures, homework and `course_lib`, the course's companion package. You need Python 3.10+
+and `make` (or conda: see below). Nothing here needs the network once installed.
+
+## Two commands
+
+```sh
+make lab                              # installs the course in .venv and opens JupyterLab
+make submit HW=hw01 STUDENT=your-id   # hands in homework 1 (see "Submit")
+```
+
+With conda instead: `conda env create -f environment.yml && conda activate geometric-continuity`,
+then `jupyter lab notebooks/00_welcome.ipynb`. The same `environment.yml` works on Binder.
+
+## Lectures and homework
+
+Work through `notebooks/` in order (`00_welcome` first). After each lecture comes its homework in
+`exercises/`: replace every `...` (or write the body of the function), run the cell, then the
+**check cell** under it. It answers ✓, or ✗ with what is wrong, or "not answered yet"; the last
+cell checks everything at once. The checks are feedback: your grade comes from the instructor's
+grader, which runs its own tests on other data, so write code that works in general and keep the
+answer names.
+
+## Submit
+
+Save the notebook, then `make submit HW=hw01 STUDENT=your-id` (or, in a cell,
+`from course_lib.submit import submit; submit("hw01_reparametrization.ipynb", student="your-id")`).
+It runs your notebook top to bottom in a fresh kernel — exactly what the grader does — lists the
+cells that raise an error, and writes `submissions/hw01-your-id.ipynb` with a small manifest (your
+id, the homework, the time, a checksum). Upload that file where your instructor says.
+"""
+
+STUDENT_MAKEFILE = """# The student edition's commands (Python 3.10+):
+#   make lab                             install the course in .venv and open JupyterLab
+#   make submit HW=hw01 STUDENT=your-id  run homework 1 fresh and write submissions/hw01-your-id.ipynb
+PYTHON ?= python3
+VENV   := .venv
+BIN    := $(VENV)/bin
+STAMP  := $(VENV)/.installed
+ALLOW_ROOT := $(if $(filter 0,$(shell id -u)),--allow-root,)
+
+.PHONY: install lab submit
+
+$(STAMP): pyproject.toml constraints.txt
+\t$(PYTHON) -m venv $(VENV)
+\t$(BIN)/python -m pip install --quiet -c constraints.txt -e .
+\ttouch $@
+
+install: $(STAMP)
+
+lab: install
+\t$(BIN)/jupyter lab --ServerApp.root_dir=$(CURDIR) $(ALLOW_ROOT) notebooks/00_welcome.ipynb
+
+submit: install
+\t@test -n "$(STUDENT)" || (echo "usage: make submit HW=hw01 STUDENT=your-id"; exit 2)
+\t$(BIN)/python -m course_lib.submit $(firstword $(wildcard exercises/$(HW)_*.ipynb)) --student $(STUDENT)
+"""
+
+
+def edition_files() -> list[Path]:
+    files: set[Path] = set()
+    for name in INCLUDE_FILES:
+        if (ROOT / name).is_file():
+            files.add(ROOT / name)
+    for pattern in INCLUDE_GLOBS:
+        files.update(p for p in ROOT.glob(pattern) if p.is_file())
+    return sorted(p for p in files if "__pycache__" not in p.parts
+                  and ".ipynb_checkpoints" not in p.parts)
+
+
+def _student_pyproject(text: str) -> str:
+    """The course's pyproject without the instructors' test group; readme = the student's."""
+    lines, skip = [], False
+    for line in text.splitlines():
+        if line.strip() == "[project.optional-dependencies]":
+            skip = True
+            continue
+        if skip and line.startswith("["):
+            skip = False
+        if skip:
+            continue
+        if line.startswith("[tool.pytest") or line.startswith("[tool.ruff"):
+            break  # instructors' tool settings
+        lines.append(line)
+    return "\n".join(lines).rstrip() + "\n"
+
+
+def build(out: Path) -> Path:
+    """Write the edition to ``out`` (replacing it) and ``out``.zip; return the zip's path."""
+    if out.exists() and any(out.iterdir()):
+        if not (out / MARK).is_file():  # never delete a folder this script did not write
+            raise SystemExit(f"--out {out}: not empty and not an earlier student edition")
+        shutil.rmtree(out)
+    out.mkdir(parents=True, exist_ok=True)
+    (out / MARK).write_text("built by tools/release.py\n", encoding="utf-8")
+    for src in edition_files():
+        rel = src.relative_to(ROOT)
+        dst = out / rel
+        dst.parent.mkdir(parents=True, exist_ok=True)
+        if rel.as_posix() == "pyproject.toml":
+            dst.write_text(_student_pyproject(src.read_text(encoding="utf-8")), encoding="utf-8")
+        else:
+            shutil.copyfile(src, dst)
+    (out / "README.md").write_text(STUDENT_README, encoding="utf-8")
+    (out / "Makefile").write_text(STUDENT_MAKEFILE, encoding="utf-8")
+    archive = out.with_suffix(".zip")
+    with zipfile.ZipFile(archive, "w", zipfile.ZIP_DEFLATED) as zf:
+        for path in sorted(out.rglob("*")):
+            if path.is_file():
+                zf.write(path, Path(out.name) / path.relative_to(out))
+    return archive
+
+
+def main(argv: list[str] | None = None) -> int:
+    p = argparse.ArgumentParser(description="Build the student edition of the course.")
+    p.add_argument("--out", type=Path, default=ROOT / "dist" / "student-edition")
+    args = p.parse_args(argv)
+    archive = build(args.out)
+    n = sum(1 for f in args.out.rglob("*") if f.is_file())
+    print(f"wrote {args.out} ({n} files) and {archive}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
