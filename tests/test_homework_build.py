@@ -152,9 +152,11 @@ def test_notebook_layout(source, version):
     for qid in questions(hw):
         name = registry()[qid].answer_name
         assert any(t.strip() == f'check("{qid}", {name})' for t in text), f"no check cell for {qid}"
-    assert "check_all(globals(), HOMEWORK)" in text[-1]
+    # the last code cell checks everything; the notebook ends with how to hand it in
+    assert "check_all(globals(), HOMEWORK)" in text[-2]
     if version == "solution":
-        assert "assert report.all_passed" in text[-1]
+        assert "assert report.all_passed" in text[-2]
+    assert text[-1].startswith("## Hand in") and f"make submit HW={hw}" in text[-1]
     for c in cells:
         if c["cell_type"] == "code":
             assert c["outputs"] == [] and c["execution_count"] is None
