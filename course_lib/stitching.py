@@ -21,6 +21,7 @@ Lesson: ``notebooks/04_beta_splines.ipynb``.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -197,11 +198,19 @@ def farin_boehm_gamma(beta1: float, beta2: float, d: int = 3, *, joint: int | No
 
 @dataclass(frozen=True)
 class FarinBoehm:
-    """Result of :func:`farin_boehm`: ``W`` = ``(W_0, W_1, W_2)``, the point ``T``, ``gamma``."""
+    """Result of :func:`farin_boehm`: ``W`` = ``(W_0, W_1, W_2)``, the point ``T``, ``gamma``.
+
+    Where γ is undefined (``β2 = -β1 (d-1)(1+β1)``) ``T`` is at infinity: ``gamma`` is
+    ``inf``, ``T`` is ``None`` and ``T_at_infinity`` is True (``W`` is still finite).
+    """
 
     W: np.ndarray
-    T: np.ndarray
+    T: np.ndarray | None
     gamma: float
+
+    @property
+    def T_at_infinity(self) -> bool:
+        return self.T is None
 
 
 def farin_boehm(V_last3: np.ndarray, beta1: float, beta2: float, d: int) -> FarinBoehm:
@@ -219,13 +228,15 @@ def farin_boehm(V_last3: np.ndarray, beta1: float, beta2: float, d: int) -> Fari
     Returns
     -------
     FarinBoehm
-        ``T = V_{d-1} + β1² γ (V_{d-1} - V_{d-2})``, ``W_2 = W_1 + (W_1 - T)/γ``.
+        ``T = V_{d-1} + β1² γ (V_{d-1} - V_{d-2})``, ``W_2 = W_1 + (W_1 - T)/γ``, computed
+        without the pole of γ as ``W_2 = W_1 + (W_1 - V_{d-1})/γ - β1² (V_{d-1} - V_{d-2})``
+        (the same point, eq. (11a)).  Where γ is undefined, ``T`` is at infinity: the
+        result has ``gamma = inf``, ``T = None``, ``T_at_infinity = True``.
 
     Raises
     ------
     ValueError
-        If ``β1 <= 0``, ``γ`` is undefined (see :func:`farin_boehm_gamma`), or
-        ``V_{d-1} = V_d``.
+        If ``β1 <= 0`` or ``V_{d-1} = V_d``.
     """
     P = as_points(V_last3, "V_last3", min_points=3)
     if P.shape[0] != 3:
@@ -234,9 +245,15 @@ def farin_boehm(V_last3: np.ndarray, beta1: float, beta2: float, d: int) -> Fari
         )
     _check_regular_end(P, "V_last3")
     b1 = check_positive(beta1, "beta1")
-    g = farin_boehm_gamma(b1, beta2, d)
+    b2 = check_finite_scalar(beta2, "beta2")
+    d = check_integer(d, "d", minimum=2)
+    den = b2 + b1 * (d - 1) * (1 + b1)
+    inv_g = den / ((d - 1) * (1 + b1))  # 1/γ, no pole
     W0 = P[2]
     W1 = W0 + b1 * (P[2] - P[1])
+    W2 = W1 + inv_g * (W1 - P[1]) - b1**2 * (P[1] - P[0])
+    if abs(den) <= 1e-12 * max(1.0, abs(b2), b1 * (d - 1) * (1 + b1)):
+        return FarinBoehm(np.array([W0, W1, W2]), None, math.inf)
+    g = (d - 1) * (1 + b1) / den
     T = P[1] + b1**2 * g * (P[1] - P[0])
-    W2 = W1 + (W1 - T) / g
     return FarinBoehm(np.array([W0, W1, W2]), T, g)
