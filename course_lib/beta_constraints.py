@@ -32,7 +32,7 @@ from functools import lru_cache
 import numpy as np
 
 from ._bell import bell_table
-from ._validation import check_integer
+from ._validation import as_real_array, check_integer
 
 __all__ = [
     "BetaConstraints",
@@ -200,7 +200,7 @@ def beta_coefficients(betas: np.ndarray | list[float]) -> np.ndarray:
 
 
 def _as_betas(betas) -> np.ndarray:
-    b = np.asarray(betas, dtype=float)
+    b = as_real_array(betas, "betas", "a sequence of real numbers")
     if b.ndim != 1 or b.size == 0:
         raise ValueError(
             f"betas must be a 1-d sequence (β_1, ..., β_n) with n >= 1; got shape {b.shape}"
@@ -215,10 +215,7 @@ def _as_betas(betas) -> np.ndarray:
 
 
 def _as_derivs(value, name: str, n: int | None = None) -> np.ndarray:
-    try:
-        d = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        raise TypeError(f"{name} must be an array of derivative vectors") from None
+    d = as_real_array(value, name, "an array of derivative vectors")
     if d.ndim != 2 or d.shape[1] not in (2, 3) or d.shape[0] == 0:
         raise ValueError(
             f"{name} must have shape (n, dim), row k-1 the k-th derivative, dim 2 or 3; "

@@ -33,7 +33,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import as_parameter_array, as_points, check_shape_parameters
+from ._validation import as_parameter_array, as_points, as_real_array, check_shape_parameters
 from .curve import PiecewiseBezier
 
 __all__ = ["catmull_rom", "catmull_rom_blending"]
@@ -86,7 +86,7 @@ def catmull_rom_blending(
 
 def _vertex_betas(beta1: object, n_vertices: int, n_joints: int) -> np.ndarray:
     """β1 at the interpolated vertices V_1 .. V_{m-1}: scalar, one per vertex, or per joint."""
-    arr = np.asarray(beta1, dtype=float) if not isinstance(beta1, (str, bytes)) else None
+    arr = as_real_array(beta1, "beta1", "a real number or an array of them")
     if arr is not None and arr.ndim == 1 and arr.size == n_joints and n_joints != n_vertices:
         b = check_shape_parameters(beta1, "beta1", n_joints, positive=True)
         return np.concatenate([[1.0], b, [1.0]])

@@ -29,7 +29,7 @@ from types import MappingProxyType
 
 import numpy as np
 
-from ._validation import as_parameter_array, as_points, check_integer, check_knots
+from ._validation import as_parameter_array, as_points, as_real_array, check_integer, check_knots
 from .bezier import _bernstein, _derivative_points, _end_derivatives
 
 __all__ = ["PiecewiseBezier"]
@@ -556,12 +556,12 @@ class PiecewiseBezier:
 
         Bézier curves are affinely invariant, so this is the exact image curve.
         """
-        A = np.asarray(matrix, dtype=float)
+        A = as_real_array(matrix, "matrix", f"a real ({self.dim}, {self.dim}) array")
         if A.shape != (self.dim, self.dim) or not np.all(np.isfinite(A)):
             raise ValueError(
                 f"matrix must be a finite ({self.dim}, {self.dim}) array; got shape {A.shape}"
             )
-        b = np.zeros(self.dim) if offset is None else np.asarray(offset, dtype=float)
+        b = np.zeros(self.dim) if offset is None else as_real_array(offset, "offset", "a real vector")
         if b.shape != (self.dim,) or not np.all(np.isfinite(b)):
             raise ValueError(
                 f"offset must be a finite vector of length {self.dim}; got shape {b.shape}"

@@ -34,6 +34,7 @@ import numpy as np
 from ._bell import bell_table, compose_derivatives
 from ._validation import (
     as_parameter_array,
+    as_real_array,
     check_finite_scalar,
     check_integer,
     check_positive,
@@ -530,13 +531,13 @@ def curve_from_curvature(
     f = _as_curvature_function(kappa)
     length = check_positive(length, "length")
     num = check_integer(num, "num", minimum=2)
-    p0 = np.asarray(start_point, dtype=float)
+    p0 = as_real_array(start_point, "start_point", "a real 2-d point")
     if p0.shape != (2,) or not np.all(np.isfinite(p0)):
         raise ValueError(f"start_point must be a finite 2-d point; got {start_point!r}")
     if start_angle is not None and start_tangent is not None:
         raise ValueError("give start_angle or start_tangent, not both")
     if start_tangent is not None:
-        v = np.asarray(start_tangent, dtype=float)
+        v = as_real_array(start_tangent, "start_tangent", "a real 2-d vector")
         if v.shape != (2,) or not np.all(np.isfinite(v)) or np.hypot(*v) == 0:
             raise ValueError(
                 f"start_tangent must be a finite nonzero 2-d vector; got {start_tangent!r}"

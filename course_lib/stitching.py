@@ -26,7 +26,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._validation import as_points, check_finite_scalar, check_integer, check_positive
+from ._validation import (
+    as_points,
+    as_real_array,
+    check_finite_scalar,
+    check_integer,
+    check_positive,
+)
 from .curve import PiecewiseBezier
 
 __all__ = [
@@ -107,7 +113,7 @@ def _rest(W_rest: object, count: int, dim: int, what: str) -> np.ndarray:
                 f"W_rest must give the {count} free control point(s) of r left by {what}; got None"
             )
         return np.zeros((0, dim))
-    R = np.asarray(W_rest, dtype=float)
+    R = as_real_array(W_rest, "W_rest", "an array of points (real numbers)")
     if R.size == 0 and count == 0:
         return np.zeros((0, dim))
     R = as_points(W_rest, "W_rest", min_points=1)
