@@ -21,7 +21,23 @@ from math import comb
 
 import numpy as np
 
-__all__ = ["bell_table", "compose_derivatives"]
+__all__ = ["MAX_CHAIN_RULE_ORDER", "bell_table", "check_chain_rule_order", "compose_derivatives"]
+
+#: Highest derivative order pushed through the chain rule (Faà di Bruno, arc-length
+#: derivatives, Beta-constraints, continuity reports).  The Bell table has O(n^3) entries
+#: and the derivatives of the parts grow like n!; above this a ValueError is raised at once
+#: (before, n = 40 took seconds and n = 1000 overflowed).
+MAX_CHAIN_RULE_ORDER = 24
+
+
+def check_chain_rule_order(n: int, name: str) -> int:
+    """Raise a ValueError naming ``name`` if ``n`` exceeds :data:`MAX_CHAIN_RULE_ORDER`."""
+    if n > MAX_CHAIN_RULE_ORDER:
+        raise ValueError(
+            f"{name} must be <= {MAX_CHAIN_RULE_ORDER} (MAX_CHAIN_RULE_ORDER, the cap of the "
+            f"chain rule's cost, which grows like n^3 and its values like n!); got {n}"
+        )
+    return n
 
 
 def bell_table(x: np.ndarray, n: int) -> np.ndarray:

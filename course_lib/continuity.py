@@ -40,6 +40,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ._bell import check_chain_rule_order
 from ._validation import check_finite_scalar, check_integer
 from .beta_constraints import solve_shape_parameters
 from .differential_geometry import _arc_length_derivatives_from, _typical_speed
@@ -259,7 +260,7 @@ def joint_continuity(
     """
     q = as_parametrization(q, "q")
     r = as_parametrization(r, "r")
-    n = check_integer(max_order, "max_order", minimum=1)
+    n = check_chain_rule_order(check_integer(max_order, "max_order", minimum=1), "max_order")
     rtol = check_finite_scalar(rtol, "rtol")
     atol = check_finite_scalar(atol, "atol")
     if rtol < 0 or atol < 0:

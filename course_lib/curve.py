@@ -561,7 +561,11 @@ class PiecewiseBezier:
             raise ValueError(
                 f"matrix must be a finite ({self.dim}, {self.dim}) array; got shape {A.shape}"
             )
-        b = np.zeros(self.dim) if offset is None else as_real_array(offset, "offset", "a real vector")
+        b = (
+            np.zeros(self.dim)
+            if offset is None
+            else as_real_array(offset, "offset", "a real vector")
+        )
         if b.shape != (self.dim,) or not np.all(np.isfinite(b)):
             raise ValueError(
                 f"offset must be a finite vector of length {self.dim}; got shape {b.shape}"

@@ -31,7 +31,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ._bell import bell_table, compose_derivatives
+from ._bell import bell_table, check_chain_rule_order, compose_derivatives
 from ._validation import (
     as_parameter_array,
     as_real_array,
@@ -430,7 +430,7 @@ def arc_length_derivatives(curve, t: float | np.ndarray, n: int) -> np.ndarray:
         Row ``k - 1`` is ``d^k c/ds^k``.
     """
     curve = as_parametrization(curve)
-    n = check_integer(n, "n", minimum=1)
+    n = check_chain_rule_order(check_integer(n, "n", minimum=1), "n")
     tt, scalar = _params(curve, t)
     d = np.stack([curve.evaluate(tt, k) for k in range(n + 1)])  # (n+1, m, dim)
     v = check_regular(curve, tt, d[1])

@@ -13,7 +13,10 @@ control polygon iff, for every ``k = 0..d+1`` (with ``b_{-1} = b_{d+1} = 0``),
 (``CR_0`` is the identity: positional continuity).  These ``(d+2)(n+1)`` linear
 equations in the ``(d+1)^2`` Bernstein coefficients of ``b_0..b_d`` leave one degree
 of freedom, fixed by the normalization ``sum_k b_k(0) = 1``; the result is a
-partition of unity (tested).  The system is solved numerically (numpy SVD).
+partition of unity (tested).  For ``n <= 4`` the system is solved by a float SVD
+(exact to ~1e-15); above, in a chained form with ``n + 2`` unknowns in multiple
+precision (``_solve_multiprecision``), so that the basis stays unique and exact (the
+uniform B-spline to ~1e-16 up to ``n = MAX_BASIS_ORDER = 16``).
 
 Seed 001 eq. (2.10) reads ``b_{k+1}^{(i)}(1) = CR_i(b_k^{(1)}(0), ..., b_k^{(i)}(0), β)``:
 it applies the chain rule to the derivatives at ``u = 0`` and equates them to those at
@@ -69,8 +72,94 @@ def _check_betas(betas: object, n: int) -> tuple[float, ...]:
     return tuple(float(x) for x in arr)
 
 
+#: Largest order n of :func:`gn_beta_spline_basis` / :func:`beta_spline`.  Above
+#: ``_FLOAT_MAX_ORDER`` the basis is solved in multiple precision (mpmath, a dependency of
+#: sympy) at O(n^4) cost: n = 12 ~0.3 s, n = 16 ~0.5 s; above the cap a ValueError is raised
+#: at once instead of an hours-long computation (n = 60 took 451 s in an SVD before).
+MAX_BASIS_ORDER = 16
+_FLOAT_MAX_ORDER = 4  # float SVD of the full system: exact to ~1e-15 for n <= 4
+
+
+def _solve_multiprecision(n: int, betas: tuple[float, ...]) -> np.ndarray:
+    """Bernstein coefficients of ``b_0..b_d`` from a chained system in multiple precision.
+
+    The joint conditions chain the blending functions: ``b_d`` vanishes to order n at 0
+    (only its top Taylor coefficient ``x_d`` is free), and the Taylor coefficients ``0..n``
+    of ``b_{k-1}`` at 0 are the chain rule ``CR_i`` applied to those of ``b_k`` at 1; only
+    its top coefficient ``x_{k-1}`` is new.  So every coefficient is a linear form in the
+    ``n + 2`` unknowns ``x_d .. x_0``, and ``b_{-1} = 0`` (``b_0`` vanishes to order n at 1)
+    gives ``n + 1`` homogeneous equations: the basis is unique iff their rank is ``n + 1``.
+    The chain amplifies rounding by ~10^n, so it runs with ``30 + 4 n`` digits (the floats
+    β are exact there); the rank is decided at half that precision.  Normalization:
+    ``sum_k b_k(0) = 1``.
+    """
+    import mpmath
+
+    ctx = mpmath.MPContext()
+    ctx.dps = 30 + 4 * n
+    d = n + 1
+    N = n + 2
+    b = [ctx.mpf(x) for x in betas]
+    B = [[ctx.mpf(0)] * (n + 1) for _ in range(n + 1)]
+    B[0][0] = ctx.mpf(1)
+    for i in range(1, n + 1):
+        for k in range(1, i + 1):
+            B[i][k] = ctx.fsum(
+                comb(i - 1, j - 1) * b[j - 1] * B[i - j][k - 1] for j in range(1, i - k + 2)
+            )
+    # the chain rule on Taylor coefficients: T[i][k] = B_{i,k} k! / i!
+    T = ctx.matrix(
+        [[B[i][k] * factorial(k) / factorial(i) for k in range(1, n + 1)] for i in range(1, n + 1)]
+    )
+    shift = ctx.matrix([[comb(j, i) for j in range(d + 1)] for i in range(n + 1)])  # u=0 -> u=1
+    at0 = ctx.zeros(d + 1, N)
+    at0[d, 0] = 1
+    forms = [at0]  # Taylor coefficients (rows) of b_d, b_{d-1}, ..., b_0 as linear forms
+    for c in range(1, d + 1):
+        at1 = shift * at0
+        chained = T * at1[1 : n + 1, :]
+        new = ctx.zeros(d + 1, N)
+        for u in range(N):
+            new[0, u] = at1[0, u]
+            for i in range(1, n + 1):
+                new[i, u] = chained[i - 1, u]
+        new[d, c] = 1
+        at0 = new
+        forms.append(at0)
+    R = shift * at0
+    square = ctx.zeros(N, N)
+    for i in range(n + 1):
+        norm = ctx.sqrt(ctx.fsum(R[i, u] ** 2 for u in range(N)))
+        for u in range(N):
+            square[i, u] = R[i, u] / norm
+    _, S, V = ctx.svd_r(square)
+    if S[n] <= ctx.mpf(10) ** (-(ctx.dps // 2)) * S[0]:
+        raise ValueError(
+            f"the shape parameters betas = {betas} admit more than one G^{n} basis of "
+            f"degree {d} (singular system); choose other values"
+        )
+    x = [V[N - 1, u] for u in range(N)]
+    taylor = [[ctx.fsum(f[i, u] * x[u] for u in range(N)) for i in range(d + 1)] for f in forms]
+    total = ctx.fsum(t[0] for t in taylor)
+    if abs(total) <= ctx.mpf(10) ** (-(ctx.dps // 2)) * max(abs(v) for t in taylor for v in t):
+        raise ValueError(
+            f"the shape parameters betas = {betas} make the normalization sum_k b_k(0) = 1 "
+            "impossible (the blending functions would sum to zero)"
+        )
+    C = np.empty((N, d + 1))
+    for idx, t in enumerate(taylor):  # forms[idx] is b_{d - idx}
+        for j in range(d + 1):  # monomial -> Bernstein: c_j = sum_{i<=j} C(j,i)/C(d,i) a_i
+            c = ctx.fsum(ctx.mpf(comb(j, i)) / comb(d, i) * t[i] for i in range(j + 1))
+            C[d - idx, j] = float(c / total)
+    return C
+
+
 @lru_cache(maxsize=128)
 def _solve(n: int, betas: tuple[float, ...], seed_eq_2_10: bool = False) -> np.ndarray:
+    if not seed_eq_2_10 and n > _FLOAT_MAX_ORDER:
+        C = _solve_multiprecision(n, betas)
+        C.setflags(write=False)
+        return C
     d = n + 1
     M = np.zeros((n + 1, n + 1))
     M[0, 0] = 1.0
@@ -180,9 +269,19 @@ def gn_beta_spline_basis(n: int, betas: object) -> BetaSplineBasis:
         Wrong number of betas, β1 <= 0, or betas for which the basis is not unique
         or cannot be normalized.
     """
-    n = check_integer(n, "n", minimum=1)
+    n = _check_order(n)
     b = _check_betas(betas, n)
     return BetaSplineBasis(n, b, _solve(n, b))
+
+
+def _check_order(n: object) -> int:
+    n = check_integer(n, "n", minimum=1)
+    if n > MAX_BASIS_ORDER:
+        raise ValueError(
+            f"n must be <= {MAX_BASIS_ORDER} (MAX_BASIS_ORDER): the G^n basis is solved in "
+            f"multiple precision at O(n^4) cost; got n = {n}"
+        )
+    return n
 
 
 def beta_spline(V: np.ndarray, betas: object, n: int = 3) -> PiecewiseBezier:
@@ -200,7 +299,7 @@ def beta_spline(V: np.ndarray, betas: object, n: int = 3) -> PiecewiseBezier:
     PiecewiseBezier
         ``info``: ``beta1 .. beta{n}`` (arrays, one value per interior joint), ``betas``.
     """
-    n = check_integer(n, "n", minimum=1)
+    n = _check_order(n)
     basis = gn_beta_spline_basis(n, betas)
     d = n + 1
     P = as_points(V, "V", min_points=d + 1)

@@ -29,7 +29,7 @@ from math import factorial
 
 import numpy as np
 
-from ._bell import compose_derivatives
+from ._bell import check_chain_rule_order, compose_derivatives
 from ._validation import as_parameter_array, as_real_array, check_finite_scalar, check_integer
 from .parametrization import _check_domain, as_parametrization, check_in_domain
 
@@ -361,7 +361,7 @@ class Reparametrized:
 
     def evaluate(self, t: float | np.ndarray, n: int = 0) -> np.ndarray:
         """n-th derivative of ``Q(f(t))``; shape (dim,) or (m, dim)."""
-        n = check_integer(n, "n", minimum=0)
+        n = check_chain_rule_order(check_integer(n, "n", minimum=0), "n")
         tt, scalar = as_parameter_array(t, "t")
         tt = check_in_domain(tt, self.domain)
         x = np.clip(self.f._raw(tt, 0), *self.param.domain)
@@ -412,6 +412,7 @@ def faa_di_bruno(outer_derivs: np.ndarray, inner_derivs: np.ndarray) -> np.ndarr
         )
     if not (np.all(np.isfinite(outer)) and np.all(np.isfinite(inner))):
         raise ValueError("outer_derivs and inner_derivs must be finite")
+    check_chain_rule_order(inner.shape[0], "the number n of derivatives (len(inner_derivs))")
     return compose_derivatives(outer, inner)
 
 
