@@ -69,7 +69,7 @@ def measure(orders: tuple[int, ...], repeats: int, cpu: bool = False) -> dict:
             M = _bell_matrix(n)
             ref[n].append(clock() - t0)
             if n not in agree:
-                agree[n] = (sp.expand(result.coefficients - M) == sp.zeros(n, n))
+                agree[n] = sp.expand(result.coefficients - M) == sp.zeros(n, n)
     med = {n: sorted(v)[len(v) // 2] for n, v in ours.items()}
     med_ref = {n: sorted(v)[len(v) // 2] for n, v in ref.items()}
     return {"ours": med, "reference": med_ref, "agree": agree}
@@ -107,8 +107,14 @@ def run(sizes: Sizes, in_process: bool = False) -> list[Result]:
         note = "same matrix as sympy.bell" if data["agree"][n] else "**differs from sympy.bell**"
         out.append(
             Result(
-                "3", f"Beta-constraints n = {n} (cold caches)", data["ours"][n],
-                "sympy.bell matrix", data["reference"][n], goal, met, note,
+                "3",
+                f"Beta-constraints n = {n} (cold caches)",
+                data["ours"][n],
+                "sympy.bell matrix",
+                data["reference"][n],
+                goal,
+                met,
+                note,
             )
         )
         if not data["agree"][n]:

@@ -97,11 +97,7 @@ def report(
         "",
         "Times are medians over repeats; *ratio* = course_lib time / reference time "
         "(below 1: course_lib is faster). Clock: "
-        + (
-            "process CPU time for items 1-4 (`--cpu`), wall time for 5-6."
-            if cpu
-            else "wall time."
-        ),
+        + ("process CPU time for items 1-4 (`--cpu`), wall time for 5-6." if cpu else "wall time."),
         "",
         render_table(results),
         "",
@@ -116,7 +112,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--quick", action="store_true", help="small sizes, no notebooks (< 20 s)")
     parser.add_argument("--skip-notebooks", action="store_true", help="do not run nbval")
     parser.add_argument(
-        "--cpu", action="store_true",
+        "--cpu",
+        action="store_true",
         help="time in-process work with process CPU time instead of wall time (items 1-4; "
         "for a machine shared with other jobs). Imports and notebooks stay wall time.",
     )
@@ -124,7 +121,9 @@ def main(argv: list[str] | None = None) -> int:
         "--only", nargs="+", choices=[*ITEMS, "notebooks"], help="run only these items"
     )
     parser.add_argument(
-        "--output", type=Path, default=None,
+        "--output",
+        type=Path,
+        default=None,
         help="markdown file to write (default: benchmarks/results.md; the quick mode only "
         "prints, unless --output is given)",
     )

@@ -31,7 +31,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from ._bell import bell_table, check_chain_rule_order
+from ._bell import bell_row, bell_table, check_chain_rule_order
 from ._validation import as_real_array, check_integer
 
 __all__ = [
@@ -347,13 +347,12 @@ def solve_shape_parameters(q_derivs: np.ndarray, r_derivs: np.ndarray) -> ShapeP
         raise ValueError("q_derivs[0] = q'(1) must be nonzero: q is not regular at the joint")
     betas = np.zeros(n)
     residuals = np.zeros_like(R)
+    B = np.zeros((n + 1, n + 1))  # Bell table of the β's, row by row (β_i enters only B_{i,1})
+    B[0, 0] = 1.0
     for i in range(1, n + 1):
-        if i > 1:
-            B = bell_table(np.append(betas[: i - 1], 0.0), i)  # β_i enters only B_{i,1}
-            known = sum(B[i, k] * Q[k - 1] for k in range(2, i + 1))
-        else:
-            known = 0.0
-        rem = R[i - 1] - known
+        bell_row(B, betas, i)
+        rem = R[i - 1] - B[i, 2 : i + 1] @ Q[1:i]
         betas[i - 1] = float(rem @ q1) / qq
+        B[i, 1] = betas[i - 1]
         residuals[i - 1] = rem - betas[i - 1] * q1
     return ShapeParameterFit(betas, residuals, np.linalg.norm(residuals, axis=-1))

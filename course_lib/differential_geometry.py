@@ -31,7 +31,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ._bell import bell_table, check_chain_rule_order, compose_derivatives
+from ._bell import bell_row, check_chain_rule_order, compose_derivatives
 from ._validation import (
     as_parameter_array,
     as_real_array,
@@ -438,15 +438,25 @@ def arc_length_derivatives(curve, t: float | np.ndarray, n: int) -> np.ndarray:
     return out[:, 0] if scalar else out
 
 
-def _arc_length_derivatives_from(d: np.ndarray, v: np.ndarray, n: int) -> np.ndarray:
-    """``d[k]`` = k-th parametric derivative (shape (n+1, m, dim)), ``v = |d[1]|``."""
+@lru_cache(maxsize=64)
+def _leibniz_matrix(n: int) -> np.ndarray:
+    """(n, n*n): row j holds C(j, i) at column i*n + (j - i) (Leibniz's rule for a product)."""
     from math import comb
 
-    m = d.shape[1]
-    # g = c'.c' and its derivatives g^(j), j = 0..n-1
-    g = np.zeros((n, m))
+    L = np.zeros((n, n * n))
     for j in range(n):
-        g[j] = sum(comb(j, i) * np.sum(d[i + 1] * d[j - i + 1], axis=-1) for i in range(j + 1))
+        for i in range(j + 1):
+            L[j, i * n + (j - i)] = comb(j, i)
+    L.setflags(write=False)
+    return L
+
+
+def _arc_length_derivatives_from(d: np.ndarray, v: np.ndarray, n: int) -> np.ndarray:
+    """``d[k]`` = k-th parametric derivative (shape (n+1, m, dim)), ``v = |d[1]|``."""
+    m = d.shape[1]
+    # g = c'.c' and its derivatives g^(j) = sum_i C(j, i) c^(i+1).c^(j-i+1), j = 0..n-1
+    G = np.einsum("imd,kmd->ikm", d[1 : n + 1], d[1 : n + 1]).reshape(n * n, m)
+    g = _leibniz_matrix(n) @ G
     # s^(j) = (sqrt o g)^(j-1), j = 1..n
     sd = np.zeros((n + 1, m))
     sd[1] = v
@@ -457,10 +467,16 @@ def _arc_length_derivatives_from(d: np.ndarray, v: np.ndarray, n: int) -> np.nda
     # t^(j)(s), j = 1..n, from s(t(s)) = s
     td = np.zeros((n, m))
     td[0] = 1.0 / v
+    B = np.zeros((n + 1, n + 1, m))  # Bell table of t', t'', ..., built row by row
+    B[0, 0] = 1.0
+    B[1, 1] = td[0]
     for j in range(2, n + 1):
-        B = bell_table(td, j)
-        acc = sum(sd[k] * B[j, k] for k in range(2, j + 1))
+        bell_row(B, td, j)
+        acc = sd[2] * B[j, 2]
+        for k in range(3, j + 1):
+            acc = acc + sd[k] * B[j, k]
         td[j - 1] = -acc / v
+        B[j, 1] = td[j - 1]
     return compose_derivatives(d[1:], td)
 
 

@@ -219,7 +219,9 @@ class FarinBoehm:
         return self.T is None
 
 
-def farin_boehm(V_last3: np.ndarray, beta1: float, beta2: float, d: int) -> FarinBoehm:
+def farin_boehm(
+    V_last3: np.ndarray, beta1: float, beta2: float, d: int, *, at_infinity: str = "raise"
+) -> FarinBoehm:
     """Farin-Boehm construction of ``W_0, W_1, W_2`` (seed 000 eq. (12.1)-(12.5)).
 
     Parameters
@@ -230,6 +232,11 @@ def farin_boehm(V_last3: np.ndarray, beta1: float, beta2: float, d: int) -> Fari
         Shape parameters, ``β1 > 0``.
     d : int
         Degree of both curves (``>= 2``).
+    at_infinity : {"raise", "report"}
+        Where γ is undefined (``β2 = -β1 (d-1)(1+β1)``), T is at infinity but ``W`` is
+        finite: ``"report"`` returns it with ``T = None``, ``gamma = inf``,
+        ``T_at_infinity = True``; ``"raise"`` (default, the historical behaviour that
+        the widgets rely on) raises the ValueError of :func:`farin_boehm_gamma`.
 
     Returns
     -------
@@ -242,7 +249,7 @@ def farin_boehm(V_last3: np.ndarray, beta1: float, beta2: float, d: int) -> Fari
     Raises
     ------
     ValueError
-        If ``β1 <= 0`` or ``V_{d-1} = V_d``.
+        If ``β1 <= 0``, ``V_{d-1} = V_d``, or γ is undefined and ``at_infinity="raise"``.
     """
     P = as_points(V_last3, "V_last3", min_points=3)
     if P.shape[0] != 3:
@@ -258,7 +265,11 @@ def farin_boehm(V_last3: np.ndarray, beta1: float, beta2: float, d: int) -> Fari
     W0 = P[2]
     W1 = W0 + b1 * (P[2] - P[1])
     W2 = W1 + inv_g * (W1 - P[1]) - b1**2 * (P[1] - P[0])
+    if at_infinity not in ("raise", "report"):
+        raise ValueError(f"at_infinity must be 'raise' or 'report'; got {at_infinity!r}")
     if abs(den) <= 1e-12 * max(1.0, abs(b2), b1 * (d - 1) * (1 + b1)):
+        if at_infinity == "raise":
+            farin_boehm_gamma(b1, b2, d)  # raises, naming beta2
         return FarinBoehm(np.array([W0, W1, W2]), None, math.inf)
     g = (d - 1) * (1 + b1) / den
     T = P[1] + b1**2 * g * (P[1] - P[0])

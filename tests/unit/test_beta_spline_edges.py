@@ -153,7 +153,7 @@ def test_extreme_beta1_is_finite_and_near_its_limit(b1, b2):
 
 def test_farin_boehm_reports_T_at_infinity():
     V = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]])
-    fb = farin_boehm(V[-3:], 1.0, -4.0, 3)
+    fb = farin_boehm(V[-3:], 1.0, -4.0, 3, at_infinity="report")
     assert fb.T_at_infinity and fb.T is None and fb.gamma == np.inf
     np.testing.assert_allclose(fb.W, g2_stitch_points(V, 1.0, -4.0), atol=1e-12)
     assert not farin_boehm(V[-3:], 1.0, -3.0, 3).T_at_infinity

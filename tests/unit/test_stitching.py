@@ -124,6 +124,7 @@ V3 = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.5], [4.0, 1.0]])
         (lambda: g1_stitch_points(V3, -1.0), "beta1 must be > 0"),
         (lambda: g2_stitch_points(V3, np.nan, 0.0), "beta1 must be finite"),
         (lambda: g2_stitch_points(V3, 1.0, np.inf), "beta2 must be finite"),
+        (lambda: farin_boehm(V3[-3:], 1.0, -4.0, 3), "beta2 = -4.0 makes gamma undefined"),
         (lambda: farin_boehm_gamma(1.0, -4.0, 3, joint=2), "at joint 2"),
         (lambda: farin_boehm(V3[-3:], -1.0, 0.0, 3), "beta1 must be > 0"),
         (lambda: farin_boehm(V3, 1.0, 0.0, 3), "exactly 3 points"),
