@@ -8,8 +8,8 @@ shapes of the question:
 
 * a whole curve (a 9-segment cubic Beta-spline, 8 joints): time per joint, the reference
   looping the direct check over the joints;
-* one joint as a widget frame asks it (``widgets._core.joint_report``: a two-segment
-  curve is built and reported), the reference checking that one joint.
+* one joint as a widget frame asks it (as ``widgets._core.joint_report`` does: a
+  two-segment curve is built and reported), the reference checking that one joint.
 
 Goal (issue 14): <= 0.5 ms per joint and <= 5x the direct check.
 """
@@ -49,9 +49,19 @@ def _curve():
     return cubic_beta_spline(V, 1.3, 0.7)
 
 
+def joint_report(curve, j: int, max_order: int):
+    """What ``course_lib.widgets._core.joint_report`` does on every frame (without importing
+    the widget stack): build the two-segment curve around joint ``j`` and report it."""
+    from course_lib.continuity import curve_continuity
+    from course_lib.curve import PiecewiseBezier
+
+    k = curve.knots
+    pair = PiecewiseBezier(curve.segments[j : j + 2], k[j : j + 3] if curve.has_knots else None)
+    return curve_continuity(pair, max_order=max_order)[0]
+
+
 def run(sizes: Sizes) -> list[Result]:
     from course_lib.continuity import curve_continuity
-    from course_lib.widgets._core import joint_report
 
     c = _curve()
     segs = c.segments

@@ -16,7 +16,8 @@ reference is measured in the same run):
 3. symbolic Beta-constraints n = 1..8 (cold caches) vs sympy's Bell polynomials;
 4. widget update latency (compute + Agg redraw), from ``widget_latency.py``;
 5. ``import course_lib`` time vs ``import numpy`` and the heavy-package check;
-6. nbval time per notebook and for the whole notebook suite.
+6. nbval time per notebook and for the whole notebook suite;
+7. the continuity report per joint vs a direct numpy G2 check (``bench_continuity.py``).
 
 Nothing here is a test: the numbers depend on the machine and its load.  The
 harness itself is smoke-tested by ``tests/test_benchmarks_smoke.py``.
@@ -38,6 +39,7 @@ if str(HERE) not in sys.path:
 
 import bench_arc_length  # noqa: E402
 import bench_beta_constraints  # noqa: E402
+import bench_continuity  # noqa: E402
 import bench_evaluation  # noqa: E402
 import bench_import  # noqa: E402
 import bench_notebooks  # noqa: E402
@@ -58,6 +60,7 @@ ITEMS = {
     "beta_constraints": bench_beta_constraints.run,
     "widgets": bench_widgets.run,
     "import": bench_import.run,
+    "continuity": bench_continuity.run,
 }
 
 
