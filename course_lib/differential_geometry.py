@@ -31,7 +31,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ._bell import bell_row, check_chain_rule_order, compose_derivatives
+from ._bell import bell_row, check_chain_rule_order
 from ._validation import (
     as_parameter_array,
     as_real_array,
@@ -453,21 +453,26 @@ def _leibniz_matrix(n: int) -> np.ndarray:
 
 def _arc_length_derivatives_from(d: np.ndarray, v: np.ndarray, n: int) -> np.ndarray:
     """``d[k]`` = k-th parametric derivative (shape (n+1, m, dim)), ``v = |d[1]|``."""
+    from math import comb
+
     m = d.shape[1]
     # g = c'.c' and its derivatives g^(j) = sum_i C(j, i) c^(i+1).c^(j-i+1), j = 0..n-1
     G = np.einsum("imd,kmd->ikm", d[1 : n + 1], d[1 : n + 1]).reshape(n * n, m)
     g = _leibniz_matrix(n) @ G
-    # s^(j) = (sqrt o g)^(j-1), j = 1..n
+    # s^(j), j = 1..n, from s'^2 = g (Leibniz): 2 s' s^(j+1) = g^(j) - sum_{i=1}^{j-1}
+    # C(j, i) s^(i+1) s^(j-i+1) -- no Bell table needed
     sd = np.zeros((n + 1, m))
     sd[1] = v
-    if n >= 2:
-        coef = np.cumprod([0.5 - i for i in range(n - 1)])  # h^(k)(x) = coef[k-1] x^(1/2-k)
-        outer = np.stack([coef[k - 1] * g[0] ** (0.5 - k) for k in range(1, n)])
-        sd[2:] = compose_derivatives(outer, g[1:n])
-    # t^(j)(s), j = 1..n, from s(t(s)) = s
+    for j in range(1, n):
+        acc = g[j]
+        for i in range(1, j):
+            acc = acc - comb(j, i) * sd[i + 1] * sd[j - i + 1]
+        sd[j + 1] = acc / (2.0 * v)
+    # t^(j)(s), j = 1..n, from s(t(s)) = s; B is the Bell table of t', t'', ... built row by
+    # row, and at the end it composes c(t(s)) (Faà di Bruno)
     td = np.zeros((n, m))
     td[0] = 1.0 / v
-    B = np.zeros((n + 1, n + 1, m))  # Bell table of t', t'', ..., built row by row
+    B = np.zeros((n + 1, n + 1, m))
     B[0, 0] = 1.0
     B[1, 1] = td[0]
     for j in range(2, n + 1):
@@ -477,7 +482,7 @@ def _arc_length_derivatives_from(d: np.ndarray, v: np.ndarray, n: int) -> np.nda
             acc = acc + sd[k] * B[j, k]
         td[j - 1] = -acc / v
         B[j, 1] = td[j - 1]
-    return compose_derivatives(d[1:], td)
+    return np.einsum("ikm,kmd->imd", B[1:, 1:], d[1 : n + 1])
 
 
 # -------------------------------------------------------- fundamental theorem
