@@ -97,3 +97,28 @@ def test_benchmark_item_7_runs_and_checks_first():
     assert len(rows) == 2 and all(r.item == "7" and r.ours > 0 and r.reference > 0 for r in rows)
     V = np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 1.0], [3.0, 0.0]])
     assert not bench_continuity.direct_g2(V, V[::-1] * [1, -1] + [6, 0])  # a corner
+
+
+@pytest.mark.parametrize("beta1", [0.02, 1.0, 50.0])
+@pytest.mark.parametrize("which", ["curvature", "tangent"])
+def test_characterizations_agree_near_the_threshold(beta1, which):
+    """Sweep a G2 joint's curvature jump (or G1 joint's tangent kink) through the tolerance:
+    the three characterizations agree, or the report says the joint is borderline."""
+    from course_lib.stitching import g2_stitch
+
+    V = np.array([[0.0, 0.0], [1.0, 1.5], [2.5, 1.8], [3.5, 1.0]])
+    base = g2_stitch(V, beta1, 0.3, np.array([[3.5 + 4 * beta1, 2.0]]))
+    q, r = base.segments
+    T = (r[1] - r[0]) / np.linalg.norm(r[1] - r[0])
+    normal = np.array([-T[1], T[0]])
+    k = 2 if which == "curvature" else 1
+    seen_far = 0
+    for eps in np.logspace(-14, -3, 45):
+        r2 = r.copy()
+        r2[k] = r2[k] + eps * np.linalg.norm(r[1] - r[0]) * normal
+        rep = curve_continuity(PiecewiseBezier([q, r2]), 3)[0]
+        assert rep.characterizations_agree or rep.borderline, (eps, rep.g_order_by)
+        if eps < 2e-13 or eps > 1e-4:
+            assert rep.characterizations_agree and not rep.borderline, (eps, rep.g_order_by)
+            seen_far += 1
+    assert seen_far >= 10
