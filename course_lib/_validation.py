@@ -28,8 +28,15 @@ __all__ = [
 
 def scaled_norm(x: np.ndarray, axis: int = -1) -> np.ndarray:
     """Euclidean norm along ``axis`` without overflow or underflow over the whole float
-    range: the vectors are scaled by a power of two (exact) before squaring."""
+    range: where the plain formula overflows or loses precision to underflow (norms
+    outside ``[1e-140, 1e150]``), the vectors are scaled by a power of two (exact) before
+    squaring."""
     x = np.asarray(x, dtype=float)
+    y = x if axis in (-1, x.ndim - 1) else np.moveaxis(x, axis, -1)
+    with np.errstate(over="ignore", under="ignore"):
+        v = np.sqrt(np.einsum("...i,...i->...", y, y))
+    if v.size and 1e-140 < v.min() and v.max() < 1e150:
+        return v
     big = np.max(np.abs(x), axis=axis, keepdims=True)
     _, e = np.frexp(np.where(big > 0, big, 1.0))
     y = np.ldexp(x, -e)

@@ -52,8 +52,8 @@ from functools import lru_cache
 import numpy as np
 
 from ._bell import bell_row, check_chain_rule_order
-from ._validation import check_finite_scalar, check_integer
-from .differential_geometry import _arc_length_derivatives_from, _typical_speed
+from ._validation import check_finite_scalar, check_integer, scaled_norm
+from .differential_geometry import _arc_length_derivatives_unit, _typical_speed
 from .parametrization import as_parametrization
 
 __all__ = ["CHARACTERIZATIONS", "JointReport", "curve_continuity", "joint_continuity"]
@@ -204,6 +204,7 @@ def _end_derivs(c, at: float, n: int) -> np.ndarray:
 
 
 def _norms(x: np.ndarray) -> np.ndarray:
+    """Plain norms: used on joints already scaled to a unit length scale (see _reports)."""
     return np.sqrt(np.einsum("...d,...d->...", x, x))
 
 
@@ -252,7 +253,7 @@ def _reports(
     norms of all compared quantities taken in one call (the report runs on every widget
     frame)."""
     J = dq.shape[1]
-    vq, vr = _norms(np.stack([dq[1], dr[1]]))
+    vq, vr, gap = scaled_norm(np.stack([dq[1], dr[1], dr[0] - dq[0]]), axis=-1)
     for name, v, ts in (("q", vq, speed_q), ("r", vr, speed_r)):
         bad = v <= 1e-10 * ts
         if bad.any():
@@ -264,6 +265,12 @@ def _reports(
                 "regular pieces"
             )
     ell = np.maximum(vq * hq, vr * hr)
+    point = dq[0].copy()
+    # work on the joint scaled by a power of two near 1/ell (exact): every measure is
+    # scale-free, and nothing overflows or underflows over the whole float range
+    _, e = np.frexp(ell)
+    dq, dr = np.ldexp(dq, -e[None, :, None]), np.ldexp(dr, -e[None, :, None])
+    vq, vr, ell = np.ldexp(vq, -e), np.ldexp(vr, -e), np.ldexp(ell, -e)
     cosang = np.einsum("jd,jd->j", dq[1], dr[1]) / (vq * vr)
     if dq.shape[2] == 2:
         cross = np.abs(dq[1, :, 0] * dr[1, :, 1] - dq[1, :, 1] * dr[1, :, 0])
@@ -271,7 +278,7 @@ def _reports(
         cross = _norms(np.cross(dq[1], dr[1]))
     angle = np.degrees(np.arctan2(cross / (vq * vr), cosang))
     m = max(n, 2)
-    A = _arc_length_derivatives_from(  # both sides in one vectorized call: (m, 2J, dim)
+    A = _arc_length_derivatives_unit(  # both sides in one vectorized call: (m, 2J, dim)
         np.concatenate([dq[: m + 1], dr[: m + 1]], axis=1), np.concatenate([vq, vr]), m
     )
     Aq, Ar = A[:n, :J], A[:n, J:]
@@ -284,12 +291,11 @@ def _reports(
     #     (Faà di Bruno); q o u must meet r with C^n.
     Qbar = np.einsum("ikj,kjd->ijd", B[1:, 1:], Q)
     N = _norms(np.stack([Q, R, Q - R, Qbar - R, Aq - Ar, res]))
-    jump = _norms(A[1, J:] - A[1, :J])
-    gap = _norms(dr[0] - dq[0])
+    jump = np.ldexp(_norms(A[1, J:] - A[1, :J]), -e)  # back to the curve's units
     k = np.arange(1, n + 1)[:, None]
     lk = ell ** (k - 1.0)
     # C^n: derivatives compared with the magnitudes of order k (parametrization-dependent)
-    scale = np.maximum(np.maximum(N[0], N[1]), np.maximum(vq**k, vr**k) / lk)
+    scale = np.maximum(np.maximum(N[0], N[1]), np.maximum(vq, vr) ** k / lk)
     # G^n, one scale-free measure for all three characterizations: the discrepancy of
     # order k as a derivative with respect to arc length, made dimensionless with the
     # length scale ell.  The Beta residual e_k = r^(k) - (q o u)^(k) is perpendicular to
@@ -318,11 +324,11 @@ def _reports(
     )
     disagree = (g_beta != g_rep) | (g_beta != g_arc)
     borderline = (np.any(near & decided[None], axis=(0, 1)) & positive) | disagree
-    res = N[5]
+    res = np.ldexp(N[5], e[None, :])
 
     out = []
     for j in range(J):
-        base = (indices[j], tuple(map(float, dq[0, j])), float(gap[j]), float(angle[j]))
+        base = (indices[j], tuple(map(float, point[j])), float(gap[j]), float(angle[j]))
         if gap[j] > rtol * ell[j] + atol:
             out.append(
                 JointReport(
@@ -423,43 +429,49 @@ def joint_continuity(
 
 def _bezier_end_derivatives(curve, m: int):
     """Derivatives of orders 0..m in the global parameter of every segment at both ends:
-    (m+1, S, dim) at u = 0 and at u = 1, from the control points (seed 000 eq. (8))."""
+    (m+1, S, dim) at u = 0 and at u = 1, from the control points (seed 000 eq. (8)); the
+    domain lengths ``h``; and each segment's typical speed (its control-point box diagonal
+    over ``h``, the regularity scale)."""
     segs = curve.segments
     h = np.diff(curve.knots)
     degrees = curve.degrees
     S, dim = len(segs), curve.dim
-    at0 = np.zeros((m + 1, S, dim))
-    at1 = np.zeros((m + 1, S, dim))
-    groups: dict[int, list[int]] = {}
-    for i, d in enumerate(degrees):
-        groups.setdefault(d, []).append(i)
+    if len(set(degrees)) == 1:
+        groups = {degrees[0]: slice(None)}
+    else:
+        groups = {}
+        for i, d in enumerate(degrees):
+            groups.setdefault(d, []).append(i)
+    at01 = np.zeros((2, m + 1, S, dim))
+    diag = np.empty(S)
     for d, idx in groups.items():
-        D = np.stack([segs[i] for i in idx])  # (s, d+1, dim)
+        D = np.array(segs) if isinstance(idx, slice) else np.stack([segs[i] for i in idx])
         top = min(m, d)
-        E0, E1 = _end_difference_rows(d, top)  # (top+1, d+1): orders 0..top at u = 0, 1
-        at0[: top + 1, idx] = np.einsum("kr,srd->ksd", E0, D)
-        at1[: top + 1, idx] = np.einsum("kr,srd->ksd", E1, D)
-    scale = (1.0 / h)[None, :, None] ** np.arange(m + 1)[:, None, None]
-    return at0 * scale, at1 * scale, h
+        E = _end_difference_rows(d, top)  # (2, top+1, d+1): orders 0..top at u = 0, 1
+        at01[:, : top + 1, idx] = np.einsum("ekr,srd->eksd", E, D)
+        box = D.max(axis=1) - D.min(axis=1)
+        diag[idx] = np.sqrt(np.einsum("sd,sd->s", box, box))
+    scale = (1.0 / h) ** np.arange(m + 1)[:, None]
+    at01 *= scale[None, :, :, None]
+    speed = np.where(diag > 0, diag / h, 1.0)
+    return at01[0], at01[1], h, speed
 
 
 @lru_cache(maxsize=64)
-def _end_difference_rows(d: int, n: int) -> tuple[np.ndarray, np.ndarray]:
+def _end_difference_rows(d: int, n: int) -> np.ndarray:
     """Rows mapping Bézier control points to derivatives 0..n at u = 0 and u = 1:
     ``d!/(d-k)! Δ^k P_0`` and ``d!/(d-k)! ∇^k P_d`` (seed 000 eq. (8.1)-(8.3))."""
     from math import comb
 
-    E0 = np.zeros((n + 1, d + 1))
-    E1 = np.zeros((n + 1, d + 1))
+    E = np.zeros((2, n + 1, d + 1))
     fac = 1.0
     for k in range(n + 1):
         for j in range(k + 1):
-            E0[k, j] = fac * (-1) ** (k - j) * comb(k, j)
-            E1[k, d - k + j] = fac * (-1) ** (k - j) * comb(k, j)
+            E[0, k, j] = fac * (-1) ** (k - j) * comb(k, j)
+            E[1, k, d - k + j] = fac * (-1) ** (k - j) * comb(k, j)
         fac *= d - k
-    E0.setflags(write=False)
-    E1.setflags(write=False)
-    return E0, E1
+    E.setflags(write=False)
+    return E
 
 
 def curve_continuity(
@@ -485,10 +497,7 @@ def curve_continuity(
     n, rtol, atol = _check_options(max_order, rtol, atol)
     if curve.n_joints == 0:
         return []
-    at0, at1, h = _bezier_end_derivatives(curve, max(n, 2))
-    # typical speed of each segment: diagonal of its control-point box / its domain length
-    diag = np.array([float(_norms(s.max(axis=0) - s.min(axis=0))) for s in curve.segments])
-    speed = np.where(diag > 0, diag / h, 1.0)
+    at0, at1, h, speed = _bezier_end_derivatives(curve, max(n, 2))
     return _reports(
         at1[:, :-1],
         at0[:, 1:],

@@ -38,6 +38,7 @@ from ._validation import (
     check_finite_scalar,
     check_integer,
     check_positive,
+    scaled_norm,
 )
 from .parametrization import as_parametrization, check_in_domain
 
@@ -87,7 +88,7 @@ def _typical_speed(curve) -> float:
     a, b = curve.domain
     segments = getattr(curve, "segments", None)
     pts = np.vstack(segments) if segments is not None else curve.evaluate(np.linspace(a, b, 17))
-    diag = float(np.linalg.norm(pts.max(axis=0) - pts.min(axis=0)))
+    diag = float(scaled_norm(pts.max(axis=0) - pts.min(axis=0)))
     return diag / (b - a) if diag > 0 else 1.0
 
 
@@ -102,7 +103,7 @@ def check_regular(curve, t: np.ndarray, d1: np.ndarray) -> np.ndarray:
         ``t`` has the leading shape of ``d1`` (or is a callable returning it, called only
         to name the place in the message).
     """
-    v = np.sqrt(np.einsum("...d,...d->...", d1, d1))
+    v = scaled_norm(d1, axis=-1)
     bad = v <= REGULARITY_RTOL * _typical_speed(curve)
     if np.any(bad):
         i = np.unravel_index(int(np.argmax(bad)), bad.shape)
@@ -149,7 +150,7 @@ def _gl(curve, a: np.ndarray, b: np.ndarray, order: int = 20) -> np.ndarray:
     x, w = _gauss_legendre(order)
     half = 0.5 * (b - a)
     nodes = (0.5 * (a + b))[:, None] + half[:, None] * x[None, :]
-    v = np.linalg.norm(curve.evaluate(nodes.ravel(), 1), axis=-1).reshape(nodes.shape)
+    v = scaled_norm(curve.evaluate(nodes.ravel(), 1), axis=-1).reshape(nodes.shape)
     return half * (v @ w)
 
 
@@ -199,7 +200,7 @@ def speed(curve, t: float | np.ndarray) -> float | np.ndarray:
     """Speed ``|c'(t)|`` (seed 004 §19.2: ``ds/dt``).  Zero is allowed here."""
     curve = as_parametrization(curve)
     tt, scalar = _params(curve, t)
-    v = np.linalg.norm(curve.evaluate(tt, 1), axis=-1)
+    v = scaled_norm(curve.evaluate(tt, 1), axis=-1)
     return float(v[0]) if scalar else v
 
 
@@ -381,6 +382,10 @@ def parameter_at_arc_length(curve, s: float | np.ndarray) -> float | np.ndarray:
     grid = np.append((bp[:-1, None] + np.diff(bp)[:, None] * frac).ravel(), bp[-1])
     S = np.concatenate([[0.0], np.cumsum(_integrate_speed(curve, grid[:-1], grid[1:]))])
     L = S[-1]
+    if not np.isfinite(L):
+        raise ValueError(
+            f"the arc length of the curve overflows the float range (L = {L}); rescale the curve"
+        )
     tol = 1e-12 * max(L, 1e-300)
     if ss.min() < -tol or ss.max() > L + tol:
         bad = ss[(ss < -tol) | (ss > L + tol)][0]
@@ -394,11 +399,11 @@ def parameter_at_arc_length(curve, s: float | np.ndarray) -> float | np.ndarray:
     base = grid[i]
     for _ in range(60):
         F = s_lo + _gl(curve, base, t) - ss
-        if np.all(np.abs(F) <= 1e-15 * max(L, 1.0) + 4e-16 * np.abs(ss)):
+        if np.all(np.abs(F) <= 1e-15 * L + 4e-16 * np.abs(ss)):  # relative: scale-free
             break
         lo = np.where(F < 0, t, lo)
         hi = np.where(F > 0, t, hi)
-        v = np.linalg.norm(curve.evaluate(t, 1), axis=-1)
+        v = scaled_norm(curve.evaluate(t, 1), axis=-1)
         with np.errstate(divide="ignore", invalid="ignore"):
             newton = t - F / v
         inside = (v > 0) & (newton > lo) & (newton < hi)
@@ -452,7 +457,18 @@ def _leibniz_matrix(n: int) -> np.ndarray:
 
 
 def _arc_length_derivatives_from(d: np.ndarray, v: np.ndarray, n: int) -> np.ndarray:
-    """``d[k]`` = k-th parametric derivative (shape (n+1, m, dim)), ``v = |d[1]|``."""
+    """``d[k]`` = k-th parametric derivative (shape (n+1, m, dim)), ``v = |d[1]|``.
+
+    Computed for the curve scaled by a power of two near ``1/v`` (exact), then scaled back
+    (``d^k c/ds^k`` is homogeneous of degree ``1 - k``): no intermediate over/underflow."""
+    _, e = np.frexp(v)
+    d = np.ldexp(d[: n + 1], -e[None, :, None])
+    A = _arc_length_derivatives_unit(d, np.ldexp(v, -e), n)
+    k = np.arange(1, n + 1)[:, None, None]
+    return np.ldexp(A, (1 - k) * e[None, :, None])
+
+
+def _arc_length_derivatives_unit(d: np.ndarray, v: np.ndarray, n: int) -> np.ndarray:
     from math import comb
 
     m = d.shape[1]
