@@ -70,7 +70,7 @@ def g1_stitch_points(V: np.ndarray, beta1: float) -> np.ndarray:
     Parameters
     ----------
     V : array_like of shape (d + 1, dim)
-        Control polygon of the left curve ``q``, ``d >= 2``.
+        Control polygon of the left curve ``q``, ``d >= 1``.
     beta1 : float
         ``β1 > 0``.
 
@@ -78,7 +78,7 @@ def g1_stitch_points(V: np.ndarray, beta1: float) -> np.ndarray:
     -------
     ndarray of shape (2, dim)
     """
-    P = _polygon(V)
+    P = _polygon(V, min_points=2)  # eq. (9)-(10) use only V_(d-1), V_d: d = 1 works
     b1 = check_positive(beta1, "beta1")
     return np.array([P[-1], P[-1] + b1 * (P[-1] - P[-2])])
 
@@ -131,18 +131,18 @@ def g1_stitch(V: np.ndarray, beta1: float, W_rest: np.ndarray) -> PiecewiseBezie
     Parameters
     ----------
     V : array_like of shape (d + 1, dim)
-        Control polygon of ``q``, ``d >= 2``.
+        Control polygon of ``q``, ``d >= 1`` (eq. (9)-(10) use only ``V_{d-1}, V_d``).
     beta1 : float
         ``β1 > 0``.
     W_rest : array_like of shape (d - 1, dim)
-        The free control points ``W_2 .. W_d`` of ``r``.
+        The free control points ``W_2 .. W_d`` of ``r`` (``None`` or empty for ``d = 1``).
 
     Returns
     -------
     PiecewiseBezier
         ``info``: ``beta1`` (one value), ``W01`` (the constructed ``W_0, W_1``).
     """
-    P = _polygon(V)
+    P = _polygon(V, min_points=2)
     W = g1_stitch_points(P, beta1)
     R = _rest(W_rest, P.shape[0] - 2, P.shape[1], "G1 fixed W_0, W_1")
     info = {"beta1": np.array([float(beta1)]), "W01": W}
