@@ -30,7 +30,9 @@ characterizations, the discrepancy of order ``k`` as a derivative with respect t
 length times ``l^{k-1}`` (dimensionless) -- ``|e_k| l^{k-1} / v_r^k`` for the Beta
 residual ``e_k`` and for ``q o u - r`` (the same vector), ``|d^k r/ds^k - d^k q/ds^k|
 l^{k-1}`` for arc length (equal to the former once the lower orders agree, because
-``e_k`` is perpendicular to the tangent) -- compared with ``rtol``.  So the verdict does
+``e_k`` is perpendicular to the tangent) -- compared with ``rtol`` times
+``max(1, l^{k-1} max|d^k/ds^k|)`` (the same tolerance for the three: rounding grows
+with the size of the derivatives of high order).  So the verdict does
 not depend on units or on how fast each piece is traversed, and the three agree except
 near the threshold (there the arc-length measure of order ``k`` also carries the lower
 orders' tolerated discrepancies times the curvature scale); where a measure lies within
@@ -290,7 +292,7 @@ def _reports(
     #     has u(a) = a and u^(j)(a) = β_j, so (q o u)^(i)(a) = sum_k B_{i,k}(β) q^(k)(a)
     #     (Faà di Bruno); q o u must meet r with C^n.
     Qbar = np.einsum("ikj,kjd->ijd", B[1:, 1:], Q)
-    N = _norms(np.stack([Q, R, Q - R, Qbar - R, Aq - Ar, res]))
+    N = _norms(np.stack([Q, R, Q - R, Qbar - R, Aq - Ar, res, Aq, Ar]))
     jump = np.ldexp(_norms(A[1, J:] - A[1, :J]), -e)  # back to the curve's units
     k = np.arange(1, n + 1)[:, None]
     lk = ell ** (k - 1.0)
@@ -308,8 +310,10 @@ def _reports(
             N[4] * lk,  # arc length
         ]
     )
-    floor = atol * lk / vr**k
-    ok = np.concatenate([(N[2] <= rtol * scale + atol)[None], delta <= rtol + floor])
+    # the tolerance of order k, the same for the three: rtol relative to the (equally
+    # dimensionless) size of the arc-length derivatives of order k, at least rtol
+    tol = rtol * np.maximum(1.0, np.maximum(N[6], N[7]) * lk) + atol * lk / vr**k
+    ok = np.concatenate([(N[2] <= rtol * scale + atol)[None], delta <= tol])
     lead = np.argmin(np.concatenate([ok, np.zeros((4, 1, J), bool)], axis=1), axis=1)
     c_order, g_beta, g_rep, g_arc = lead
     g_beta = np.where(positive, g_beta, 0)
@@ -319,9 +323,7 @@ def _reports(
     # disagree (possible only near the threshold: the arc-length measure of order k also
     # carries the lower orders' tolerated discrepancies times the curvature scale)
     decided = k <= np.minimum(np.maximum.reduce([g_beta, g_rep, g_arc]) + 1, n)
-    near = (delta > (rtol + floor) / BORDERLINE_FACTOR) & (
-        delta <= (rtol + floor) * BORDERLINE_FACTOR
-    )
+    near = (delta > tol / BORDERLINE_FACTOR) & (delta <= tol * BORDERLINE_FACTOR)
     disagree = (g_beta != g_rep) | (g_beta != g_arc)
     borderline = (np.any(near & decided[None], axis=(0, 1)) & positive) | disagree
     res = np.ldexp(N[5], e[None, :])

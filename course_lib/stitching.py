@@ -16,6 +16,11 @@ point ``T`` on the line ``V_{d-2} V_{d-1}``:
 is correct: expanding it gives eq. (11b) exactly (sympy proof:
 ``tests/unit/test_stitching.py::test_farin_boehm_factorizes_eq_11b_symbolically``).
 
+Any order: :func:`gn_stitch_points` fixes ``W_0 .. W_n`` from the Beta-constraints of
+orders ``0..n`` (seed 000 eq. (6)) with the Bézier end derivatives, one point per order:
+``W_i = (d-i)!/d! r^{(i)}(0) - sum_{j<i} (-1)^{i-j} C(i, j) W_j``; for ``n = 1, 2`` it is
+eq. (10) and (11a).
+
 Lesson: ``notebooks/04_beta_splines.ipynb``.
 """
 
@@ -43,6 +48,8 @@ __all__ = [
     "g1_stitch_points",
     "g2_stitch",
     "g2_stitch_points",
+    "gn_stitch",
+    "gn_stitch_points",
 ]
 
 
@@ -274,3 +281,80 @@ def farin_boehm(
     g = (d - 1) * (1 + b1) / den
     T = P[1] + b1**2 * g * (P[1] - P[0])
     return FarinBoehm(np.array([W0, W1, W2]), T, g)
+
+
+def gn_stitch_points(V: np.ndarray, betas: object) -> np.ndarray:
+    """``W_0 .. W_n`` that make ``r`` continue ``q`` with G^n for ``β_1 .. β_n``.
+
+    The Beta-constraints ``r^{(i)}(0) = sum_k B_{i,k}(β) q^{(k)}(1)`` (seed 000 eq. (6))
+    with the Bézier end derivatives ``q^{(k)}(1) = d!/(d-k)! ∇^k V_d`` and ``r^{(i)}(0) =
+    d!/(d-i)! Δ^i W_0`` (eq. (8)) fix one new point per order.  ``n = 1, 2`` give eq. (10)
+    and (11a) (tested equal to :func:`g1_stitch_points`, :func:`g2_stitch_points`).
+
+    Parameters
+    ----------
+    V : array_like of shape (d + 1, dim)
+        Control polygon of the left curve ``q``, ``d >= n`` (``r`` has the same degree).
+    betas : sequence of n floats
+        ``β_1 > 0, β_2, ..., β_n`` (``n <= MAX_CHAIN_RULE_ORDER``).
+
+    Returns
+    -------
+    ndarray of shape (n + 1, dim)
+    """
+    from math import comb, factorial
+
+    from .beta_constraints import apply_beta_constraints
+
+    b = as_real_array(betas, "betas", "a sequence (beta1, ..., betan) of real numbers")
+    if b.ndim != 1 or b.size == 0:
+        raise ValueError(
+            f"betas must be a sequence (beta1, ..., betan), n >= 1; got shape {b.shape}"
+        )
+    n = b.size
+    P = _polygon(V, min_points=2)
+    d = P.shape[0] - 1
+    if n > d:
+        raise ValueError(f"G^{n} stitching needs degree d >= n = {n}; V has degree {d}")
+    if not b[0] > 0:
+        raise ValueError(f"beta1 must be > 0; got {b[0]}")
+    q = np.stack([_backward(P, k) * (factorial(d) / factorial(d - k)) for k in range(1, n + 1)])
+    r = apply_beta_constraints(q, b)  # r^(1..n)(0)
+    W = [P[-1]]
+    for i in range(1, n + 1):
+        acc = r[i - 1] * (factorial(d - i) / factorial(d))
+        for j in range(i):
+            acc = acc - (-1) ** (i - j) * comb(i, j) * W[j]
+        W.append(acc)
+    return np.array(W)
+
+
+def _backward(P: np.ndarray, k: int) -> np.ndarray:
+    """``∇^k V_d = sum_j (-1)^j C(k, j) V_{d-j}``."""
+    from math import comb
+
+    return sum((-1) ** j * comb(k, j) * P[-1 - j] for j in range(k + 1))
+
+
+def gn_stitch(V: np.ndarray, betas: object, W_rest: np.ndarray | None = None) -> PiecewiseBezier:
+    """Two-segment curve ``q, r`` meeting with G^n for ``β_1 .. β_n`` (seed 000 eq. (6), (8)).
+
+    Parameters
+    ----------
+    W_rest : array_like of shape (d - n, dim)
+        The free points ``W_{n+1} .. W_d`` (``None`` or empty for ``d = n``).
+
+    Returns
+    -------
+    PiecewiseBezier
+        ``info``: ``beta1 .. beta{n}`` (one value each), ``betas``, ``W_fixed``.
+    """
+    P = _polygon(V, min_points=2)
+    W = gn_stitch_points(P, betas)
+    n = W.shape[0] - 1
+    R = _rest(W_rest, P.shape[0] - 1 - n, P.shape[1], f"G{n} fixed W_0 .. W_{n}")
+    b = tuple(float(x) for x in np.asarray(betas, dtype=float))
+    info: dict[str, object] = {f"beta{i + 1}": np.array([x]) for i, x in enumerate(b)}
+    info["betas"] = b
+    info["W_fixed"] = W
+    return PiecewiseBezier._fast([P, np.vstack([W, R])], info=info)
