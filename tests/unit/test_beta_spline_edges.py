@@ -206,3 +206,14 @@ def test_design_at_gamma_infinite_says_why():
     c = cubic_beta_spline(V7, 1.0, -4.0)
     with pytest.raises(ValueError, match="gamma is infinite"):
         design_beta_spline(V7, c.info["interior_points"])
+
+
+@pytest.mark.parametrize("b1", [1e-300, 1e-100, 1e100, 1e300])
+def test_catmull_rom_extreme_beta1_is_finite_or_refused(b1):
+    from course_lib.catmull_rom import catmull_rom
+
+    c = catmull_rom(V7, b1)
+    assert np.all(np.isfinite(np.array(c.segments)))
+    if b1 == 1e300:
+        with pytest.raises(ValueError, match="float range"):
+            catmull_rom(V7 * 1e10, b1)
