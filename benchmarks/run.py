@@ -17,7 +17,8 @@ reference is measured in the same run):
 4. widget update latency (compute + Agg redraw), from ``widget_latency.py``;
 5. ``import course_lib`` time vs ``import numpy`` and the heavy-package check;
 6. nbval time per notebook and for the whole notebook suite;
-7. the continuity report per joint vs a direct numpy G2 check (``bench_continuity.py``).
+7. the continuity report per joint vs a direct numpy G2 check (``bench_continuity.py``);
+8. building and first evaluation of a 10^5-segment curve vs scipy (``bench_large_curve.py``).
 
 Nothing here is a test: the numbers depend on the machine and its load.  The
 harness itself is smoke-tested by ``tests/test_benchmarks_smoke.py``.
@@ -42,6 +43,7 @@ import bench_beta_constraints  # noqa: E402
 import bench_continuity  # noqa: E402
 import bench_evaluation  # noqa: E402
 import bench_import  # noqa: E402
+import bench_large_curve  # noqa: E402
 import bench_notebooks  # noqa: E402
 import bench_widgets  # noqa: E402
 from bench_common import (  # noqa: E402
@@ -61,6 +63,7 @@ ITEMS = {
     "widgets": bench_widgets.run,
     "import": bench_import.run,
     "continuity": bench_continuity.run,
+    "large_curve": bench_large_curve.run,
 }
 
 

@@ -122,3 +122,14 @@ def test_characterizations_agree_near_the_threshold(beta1, which):
             assert rep.characterizations_agree and not rep.borderline, (eps, rep.g_order_by)
             seen_far += 1
     assert seen_far >= 10
+
+
+def test_benchmark_item_8_runs_and_checks_first():
+    sys.path.insert(0, str(BENCH))
+    try:
+        import bench_common
+        import bench_large_curve
+    finally:
+        sys.path.remove(str(BENCH))
+    rows = bench_large_curve.run(bench_common.TINY)
+    assert len(rows) == 2 and all(r.item == "8" and r.ours > 0 and r.reference > 0 for r in rows)
