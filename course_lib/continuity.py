@@ -272,7 +272,9 @@ def _reports(
     # scale-free, and nothing overflows or underflows over the whole float range
     _, e = np.frexp(ell)
     dq, dr = np.ldexp(dq, -e[None, :, None]), np.ldexp(dr, -e[None, :, None])
+    gapped = gap > rtol * ell + atol  # in the curve's units
     vq, vr, ell = np.ldexp(vq, -e), np.ldexp(vr, -e), np.ldexp(ell, -e)
+    atol_n = np.ldexp(atol, -e)  # atol in the rescaled units
     cosang = np.einsum("jd,jd->j", dq[1], dr[1]) / (vq * vr)
     if dq.shape[2] == 2:
         cross = np.abs(dq[1, :, 0] * dr[1, :, 1] - dq[1, :, 1] * dr[1, :, 0])
@@ -312,8 +314,8 @@ def _reports(
     )
     # the tolerance of order k, the same for the three: rtol relative to the (equally
     # dimensionless) size of the arc-length derivatives of order k, at least rtol
-    tol = rtol * np.maximum(1.0, np.maximum(N[6], N[7]) * lk) + atol * lk / vr**k
-    ok = np.concatenate([(N[2] <= rtol * scale + atol)[None], delta <= tol])
+    tol = rtol * np.maximum(1.0, np.maximum(N[6], N[7]) * lk) + atol_n * lk / vr**k
+    ok = np.concatenate([(N[2] <= rtol * scale + atol_n)[None], delta <= tol])
     lead = np.argmin(np.concatenate([ok, np.zeros((4, 1, J), bool)], axis=1), axis=1)
     c_order, g_beta, g_rep, g_arc = lead
     g_beta = np.where(positive, g_beta, 0)
@@ -331,7 +333,7 @@ def _reports(
     out = []
     for j in range(J):
         base = (indices[j], tuple(map(float, point[j])), float(gap[j]), float(angle[j]))
-        if gap[j] > rtol * ell[j] + atol:
+        if gapped[j]:
             out.append(
                 JointReport(
                     *base, float(jump[j]), -1, -1, (), (), dict.fromkeys(CHARACTERIZATIONS, -1), n

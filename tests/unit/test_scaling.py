@@ -64,3 +64,16 @@ def test_beta_spline_design_and_report_scale(scale, b1, b2):
     rs = curve_continuity(cs, 3)
     assert [r.g_order_by for r in rs] == [r.g_order_by for r in r1]
     np.testing.assert_allclose([r.betas for r in rs], [r.betas for r in r1], rtol=1e-8, atol=1e-8)
+
+
+@pytest.mark.parametrize("scale", [1e-150, 1e-6, 1.0, 1e6, 1e150])
+def test_report_gap_and_atol_are_scale_free(scale):
+    """A relative gap of 1e-6 is a gap at every scale; atol is in the curve's units."""
+    q = V
+    r = q[-1] + np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]])
+    r = r + np.array([0.0, 4e-6])  # a gap of 1e-6 of the size
+    c = PiecewiseBezier([q, r]).transformed(np.eye(2) * scale)
+    rep = curve_continuity(c, 2)[0]
+    assert rep.g_order == -1 and rep.gap == pytest.approx(4e-6 * scale, rel=1e-9)
+    rep = curve_continuity(c, 2, atol=1e-5 * scale)[0]
+    assert rep.g_order >= 0
