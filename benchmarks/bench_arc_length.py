@@ -63,13 +63,7 @@ def _row(name, curve, segments, arc_length, sizes, repeats, note=""):
     ours = median_time(lambda: arc_length(curve), repeats)
     ref = median_time(lambda: sum(scipy_length(P) for P in segments), repeats)
     return Result(
-        "2",
-        name,
-        ours,
-        "scipy quad",
-        ref,
-        "error ≤ 1e-12",
-        err_ours <= GOAL_REL_ERROR,
+        "2", name, ours, "scipy quad", ref, "error ≤ 1e-12", err_ours <= GOAL_REL_ERROR,
         f"rel. error vs mpmath (40 digits): course_lib {err_ours:.1e}, quad {err_ref:.1e}{note}",
         {"length": exact, "error_course_lib": err_ours, "error_scipy": err_ref},
     )
@@ -85,21 +79,12 @@ def run(sizes: Sizes) -> list[Result]:
     from course_lib import PiecewiseBezier
 
     one = _row(
-        "arc length of one cubic",
-        PiecewiseBezier([CUBIC]),
-        [CUBIC],
-        arc_length,
-        sizes,
+        "arc length of one cubic", PiecewiseBezier([CUBIC]), [CUBIC], arc_length, sizes,
         5 * sizes.repeats,
     )
     spline = build_curves(sizes.arc_segments)[1]
     many = _row(
-        f"arc length of a {sizes.arc_segments}-segment cubic spline",
-        spline,
-        spline.segments,
-        arc_length,
-        sizes,
-        sizes.repeats,
-        "; quad called once per segment",
+        f"arc length of a {sizes.arc_segments}-segment cubic spline", spline, spline.segments,
+        arc_length, sizes, sizes.repeats, "; quad called once per segment",
     )
     return [one, many]

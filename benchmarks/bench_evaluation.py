@@ -23,12 +23,9 @@ from bench_common import Result, Sizes, median_time
 N_SEGMENTS = 50
 AGREEMENT = 1e-12  # required agreement of course_lib and scipy (and geomdl)
 # Boehm's uniform cubic B-spline -> Bézier matrix (rows: B_0..B_3; columns: P_i..P_{i+3}).
-BSPLINE_TO_BEZIER = (
-    np.array(
-        [[1.0, 4.0, 1.0, 0.0], [0.0, 4.0, 2.0, 0.0], [0.0, 2.0, 4.0, 0.0], [0.0, 1.0, 4.0, 1.0]]
-    )
-    / 6.0
-)
+BSPLINE_TO_BEZIER = np.array(
+    [[1.0, 4.0, 1.0, 0.0], [0.0, 4.0, 2.0, 0.0], [0.0, 2.0, 4.0, 0.0], [0.0, 1.0, 4.0, 1.0]]
+) / 6.0
 
 
 def build_curves(n_segments: int = N_SEGMENTS, seed: int = 20261123):
@@ -95,14 +92,8 @@ def run(sizes: Sizes) -> list[Result]:
         ours = median_time(lambda n=n: curve.evaluate(t, n), sizes.repeats)
         ref = median_time(lambda n=n: spline(t, nu=n), sizes.repeats)
         r = Result(
-            "1",
-            f"{label[n]}, {m:.0e} params, 50 cubic segments",
-            ours,
-            "scipy BSpline",
-            ref,
-            "≤ 1.5",
-            None,
-            f"agrees with scipy to {err:.1e} (checked before timing)",
+            "1", f"{label[n]}, {m:.0e} params, 50 cubic segments", ours, "scipy BSpline", ref,
+            "≤ 1.5", None, f"agrees with scipy to {err:.1e} (checked before timing)",
         )
         r.met = r.ratio <= 1.5
         results.append(r)
@@ -113,13 +104,8 @@ def run(sizes: Sizes) -> list[Result]:
                 raise AssertionError(f"geomdl and scipy disagree on derivative {n}: {gerr:.3g}")
             slow = median_time(lambda n=n: _geomdl_eval(g, t_slow, n), sizes.repeats_slow, 0)
             r = Result(
-                "1",
-                f"{label[n]} vs geomdl (pure Python)",
-                ours,
-                "geomdl",
-                slow * scale,
-                "≤ 0.01 (≥ 100× faster)",
-                None,
+                "1", f"{label[n]} vs geomdl (pure Python)", ours, "geomdl", slow * scale,
+                "≤ 0.01 (≥ 100× faster)", None,
                 f"geomdl timed on {m_slow:.0e} params, scaled ×{scale:.0f} per point; "
                 f"course_lib {slow * scale / ours:.0f}× faster",
             )
@@ -130,13 +116,8 @@ def run(sizes: Sizes) -> list[Result]:
         slow = median_time(lambda n=n: _per_point(curve, t_slow, n), sizes.repeats_slow, 0)
         results.append(
             Result(
-                "1",
-                f"{label[n]} vs per-point loop",
-                ours,
-                "scalar evaluate() loop",
-                slow * scale,
-                "",
-                None,
+                "1", f"{label[n]} vs per-point loop", ours, "scalar evaluate() loop",
+                slow * scale, "", None,
                 f"loop timed on {m_slow:.0e} params, scaled ×{scale:.0f}; "
                 f"vectorized {slow * scale / ours:.0f}× faster",
             )
@@ -155,13 +136,7 @@ def run(sizes: Sizes) -> list[Result]:
     ours = median_time(lambda: shifted.evaluate(ts), sizes.repeats)
     ref = median_time(lambda: spline(t), sizes.repeats)
     r = Result(
-        "1",
-        "points, explicit knots 2 + 0.37 i",
-        ours,
-        "scipy BSpline",
-        ref,
-        "≤ 1.5",
-        None,
+        "1", "points, explicit knots 2 + 0.37 i", ours, "scipy BSpline", ref, "≤ 1.5", None,
         "general knots: segments found by binary search (default knots 0..S use floor(2t))",
     )
     r.met = r.ratio <= 1.5

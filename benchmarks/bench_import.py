@@ -27,17 +27,8 @@ from bench_common import REPO, Result, Sizes
 GOAL_SECONDS = 0.150
 HEAVY = ("sympy", "matplotlib", "ipywidgets", "scipy")
 MATH_SUBMODULES = (
-    "bezier",
-    "curve",
-    "differential_geometry",
-    "reparametrization",
-    "beta_constraints",
-    "continuity",
-    "stitching",
-    "catmull_rom",
-    "beta_splines",
-    "knot_splines",
-    "higher_order",
+    "bezier", "curve", "differential_geometry", "reparametrization", "beta_constraints",
+    "continuity", "stitching", "catmull_rom", "beta_splines", "knot_splines", "higher_order",
     "surfaces",
 )
 
@@ -68,12 +59,7 @@ def _importtime(statement: str, prefix: str) -> float:
     """
     proc = subprocess.run(
         [sys.executable, "-X", "importtime", "-c", statement],
-        capture_output=True,
-        text=True,
-        cwd=REPO,
-        timeout=120,
-        check=True,
-        env=_env(),
+        capture_output=True, text=True, cwd=REPO, timeout=120, check=True, env=_env(),
     )
     pattern = re.compile(r"import time:\s+\d+\s+\|\s+(\d+)\s+\|( +)(\S+)\s*$")
     total = 0.0
@@ -94,11 +80,7 @@ def _importtime(statement: str, prefix: str) -> float:
 def heavy_modules_after(statement: str) -> list[str]:
     code = f"{statement}; import sys; print(' '.join(sorted(sys.modules)))"
     proc = subprocess.run(
-        [sys.executable, "-c", code],
-        capture_output=True,
-        text=True,
-        cwd=REPO,
-        timeout=120,
+        [sys.executable, "-c", code], capture_output=True, text=True, cwd=REPO, timeout=120,
         check=True,
     )
     loaded = set(proc.stdout.split())
@@ -120,9 +102,7 @@ def run(sizes: Sizes) -> list[Result]:
     cpu = bench_common.CLOCK is time.process_time
     stat = np.min if cpu else np.median
     how = "-X importtime cumulative, " + (
-        f"fastest of {runs} interleaved runs (--cpu)"
-        if cpu
-        else f"median of {runs} interleaved runs"
+        f"fastest of {runs} interleaved runs (--cpu)" if cpu else f"median of {runs} interleaved runs"
     )
     ours, all_, numpy = (float(stat(v)) for v in (ours_t, all_t, numpy_t))
     own = float(np.median(np.subtract(ours_t, numpy_t)))
@@ -130,30 +110,17 @@ def run(sizes: Sizes) -> list[Result]:
     note = "no sympy/matplotlib/ipywidgets/scipy loaded" if not heavy else f"loads {heavy}"
     return [
         Result(
-            "5",
-            "import course_lib (fresh interpreter)",
-            ours,
-            "import numpy",
-            numpy,
-            "≤ 150 ms",
-            ours <= GOAL_SECONDS,
+            "5", "import course_lib (fresh interpreter)", ours, "import numpy", numpy,
+            "≤ 150 ms", ours <= GOAL_SECONDS,
             f"{how}"
-            + (
-                ""
-                if cpu
-                else f" (fastest {min(ours_t) * 1e3:.0f} ms, numpy {min(numpy_t) * 1e3:.0f} ms)"
-            )
+            + ("" if cpu else f" (fastest {min(ours_t) * 1e3:.0f} ms, numpy "
+               f"{min(numpy_t) * 1e3:.0f} ms)")
             + ", bytecode cached; "
             f"includes numpy; course_lib's own share ≈ {own * 1e3:.0f} ms",
         ),
         Result(
-            "5",
-            f"import course_lib + {len(subs)} math submodules",
-            all_,
-            "import numpy",
-            numpy,
-            "≤ 150 ms, nothing heavy",
-            all_ <= GOAL_SECONDS and not heavy,
+            "5", f"import course_lib + {len(subs)} math submodules", all_, "import numpy", numpy,
+            "≤ 150 ms, nothing heavy", all_ <= GOAL_SECONDS and not heavy,
             f"{note}; submodules: {', '.join(subs)}",
         ),
     ]

@@ -65,13 +65,8 @@ def run(sizes: Sizes, skip: bool = False, workers: int | None = None) -> list[Re
         return [Result("6", "notebooks (nbval)", note="skipped (--skip-notebooks or --quick)")]
     notebooks = find_notebooks()
     if not notebooks:
-        return [
-            Result(
-                "6",
-                "notebooks (nbval)",
-                note="no .ipynb under notebooks/, exercises/, solutions/ at run time",
-            )
-        ]
+        return [Result("6", "notebooks (nbval)", note="no .ipynb under notebooks/, exercises/, "
+                       "solutions/ at run time")]
     workers = workers or max(1, min(2, os.cpu_count() or 1))
     groups = _split(notebooks, workers)
     rel = [p.relative_to(REPO).as_posix() for p in notebooks]
@@ -85,27 +80,13 @@ def run(sizes: Sizes, skip: bool = False, workers: int | None = None) -> list[Re
         for g, group in enumerate(groups):
             xml = Path(tmp) / f"nbval-{g}.xml"
             cmd = [
-                sys.executable,
-                "-m",
-                "pytest",
-                "-q",
-                "-p",
-                "no:randomly",
-                f"--junitxml={xml}",
-                "-o",
-                "junit_duration_report=total",
-                "-o",
-                "junit_family=xunit2",
+                sys.executable, "-m", "pytest", "-q", "-p", "no:randomly", f"--junitxml={xml}",
+                "-o", "junit_duration_report=total", "-o", "junit_family=xunit2",
                 *(p.relative_to(REPO).as_posix() for p in group),
             ]
-            procs.append(
-                (
-                    xml,
-                    subprocess.Popen(
-                        cmd, cwd=REPO, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
-                    ),
-                )
-            )
+            procs.append((xml, subprocess.Popen(
+                cmd, cwd=REPO, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
+            )))
         for xml, proc in procs:
             out, err = proc.communicate(timeout=1800)
             codes.append(proc.returncode)
@@ -130,32 +111,21 @@ def run(sizes: Sizes, skip: bool = False, workers: int | None = None) -> list[Re
             note += f"; ran beside another notebook ({len(groups)} pytest processes)"
         results.append(
             Result(
-                "6",
-                f"nbval `{nb}`",
-                seconds,
-                "empty notebook" if kernel else "",
-                kernel,
-                note=note,
-                met=not failed[nb],
+                "6", f"nbval `{nb}`", seconds, "empty notebook" if kernel else "", kernel,
+                note=note, met=not failed[nb],
             )
         )
     ok = all(c == 0 for c in codes)
     results.append(
         Result(
-            "6",
-            f"nbval, all {len(notebooks)} notebooks, one after another",
-            sum(per_nb.values()),
-            met=ok,
-            note="sum of the notebooks' times: what the sequential `pytest` run spends",
+            "6", f"nbval, all {len(notebooks)} notebooks, one after another", sum(per_nb.values()),
+            met=ok, note="sum of the notebooks' times: what the sequential `pytest` run spends",
         )
     )
     results.append(
         Result(
-            "6",
-            f"nbval, all {len(notebooks)} notebooks, {len(groups)} pytest processes",
-            wall,
-            met=ok,
-            note="wall time of this run; " + " / ".join(summaries),
+            "6", f"nbval, all {len(notebooks)} notebooks, {len(groups)} pytest processes",
+            wall, met=ok, note="wall time of this run; " + " / ".join(summaries),
         )
     )
     return results

@@ -41,9 +41,7 @@ def run(sizes: Sizes) -> list[Result]:
     if not (BENCH_DIR / "widget_latency.py").exists():
         return [
             Result(
-                "4",
-                NAME,
-                goal="≤ 25 ms median",
+                "4", NAME, goal="≤ 25 ms median",
                 note="TODO: benchmarks/widget_latency.py (by the widgets' author) is not there "
                 "yet; rerun `make bench` once it is",
             )
@@ -52,29 +50,19 @@ def run(sizes: Sizes) -> list[Result]:
         cpu = bench_common.CLOCK is time.process_time
         d = _measure(sizes.widget_repeats, ipympl=sizes.name == "full", cpu=cpu)
     except Exception as exc:
-        return [
-            Result("4", NAME, goal="≤ 25 ms median", note=f"TODO: widget_latency failed: {exc}")
-        ]
+        return [Result("4", NAME, goal="≤ 25 ms median", note=f"TODO: widget_latency failed: {exc}")]
     scene = f"Beta-spline demo, {d['segments']} segments, {d['comb_samples']}-tooth comb, β1 slider"
     ms = {k: v * 1e3 for k, v in d.items() if isinstance(v, float)}
     rows = [
         Result(
-            "4",
-            f"{scene}: total (compute + report + Agg blit)",
-            d["total"],
-            "full Agg redraw, no blitting",
-            d["redraw_full"],
-            "≤ 25 ms",
-            d["total"] <= GOAL_SECONDS,
+            "4", f"{scene}: total (compute + report + Agg blit)", d["total"],
+            "full Agg redraw, no blitting", d["redraw_full"], "≤ 25 ms", d["total"] <= GOAL_SECONDS,
             f"median of {d['repeats']} slider moves; of which curve + artists "
             f"{ms['compute_curve_and_artists']:.1f} ms, continuity report {ms['report']:.1f} ms, "
             f"blit {ms['redraw_blit']:.1f} ms",
         ),
         Result(
-            "4",
-            f"{scene}: math only",
-            d["math_only"],
-            goal="≤ 2 ms (widgets issue)",
+            "4", f"{scene}: math only", d["math_only"], goal="≤ 2 ms (widgets issue)",
             met=d["math_only"] <= 0.002,
             note="construction, comb, samples, vectors, κ(s): no matplotlib",
         ),
@@ -82,9 +70,7 @@ def run(sizes: Sizes) -> list[Result]:
     if d.get("ipympl_total") is not None:
         rows.append(
             Result(
-                "4",
-                f"{scene}: through ipympl (adds PNG encoding)",
-                d["ipympl_total"],
+                "4", f"{scene}: through ipympl (adds PNG encoding)", d["ipympl_total"],
                 note="real slider widget and ipympl canvas, no browser",
             )
         )

@@ -117,9 +117,7 @@ def test_each_faulty_submission_gets_its_points_and_notes(fixture_run, name):
     for fragment in run_notes:
         assert fragment in feedback, f"{name}: no run note {fragment!r}"
     if total == 13:
-        assert all(
-            float(row[q]) == grade.HiddenTests.load(HIDDEN / "hw01.py").points[q] for q in notes
-        )
+        assert all(float(row[q]) == grade.HiddenTests.load(HIDDEN / "hw01.py").points[q] for q in notes)
 
 
 def test_score_table_layout(fixture_run):
@@ -141,10 +139,7 @@ def test_solutions_full_marks_blank_exercises_zero():
     jobs = []
     for hw, name in HOMEWORK_FILES.items():
         tests = grade.HiddenTests.load(HIDDEN / f"{hw}.py")
-        jobs += [
-            (ROOT / "solutions" / name, tests, "solution"),
-            (ROOT / "exercises" / name, tests, "blank"),
-        ]
+        jobs += [(ROOT / "solutions" / name, tests, "solution"), (ROOT / "exercises" / name, tests, "blank")]
     before = _hashes(p for p, _, _ in jobs)
 
     def run(job):
@@ -159,9 +154,7 @@ def test_solutions_full_marks_blank_exercises_zero():
             assert r.total == tests.max_points, (tests.homework, r.notes)
         else:
             assert r.total == 0, (tests.homework, r.points)
-            assert all(
-                "not answered" in n for n in r.notes.values() if "NotImplemented" in n or "..." in n
-            )
+            assert all("not answered" in n for n in r.notes.values() if "NotImplemented" in n or "..." in n)
     assert _hashes(p for p, _, _ in jobs) == before
 
 

@@ -120,9 +120,7 @@ def test_hidden_tests_are_independent_of_course_lib(hidden):
     assert not [m for m in imports if m.startswith("course_lib")], imports
     module = _load(f"hidden_{hidden.stem}", hidden)
     qs = [q.split(".")[1] for q in questions(hidden.stem)]
-    assert list(module.POINTS) == qs, (
-        "hidden tests and feedback checks must cover the same questions"
-    )
+    assert list(module.POINTS) == qs, "hidden tests and feedback checks must cover the same questions"
     assert all(callable(getattr(module, q)) for q in qs)
 
 

@@ -125,11 +125,7 @@ def check_all(namespace: Mapping[str, object], homework: str | None = None) -> R
     if homework is None:
         homework = namespace.get("HOMEWORK") if isinstance(namespace, Mapping) else None
     if homework not in HOMEWORKS:
-        v = Verdict(
-            str(homework),
-            False,
-            f"name the homework: check_all(globals(), 'hw01'); known: {HOMEWORKS}.",
-        )
+        v = Verdict(str(homework), False, f"name the homework: check_all(globals(), 'hw01'); known: {HOMEWORKS}.")
         return Report(str(homework), (v,))
     _load(homework)
     verdicts = []
@@ -156,13 +152,9 @@ def check_choice(question_id: str, answer: object, correct_hash: str) -> Verdict
     wrong; the right answer is not stored anywhere in the notebook.
     """
     if is_unanswered(answer) or answer is None:
-        return Verdict(
-            question_id, False, "not answered yet (replace the ... by your choice).", UNANSWERED
-        )
+        return Verdict(question_id, False, "not answered yet (replace the ... by your choice).", UNANSWERED)
     if isinstance(answer, float) or callable(answer):
-        return Verdict(
-            question_id, False, "give the letter(s) of your choice, e.g. 'b' or 'a, c'.", FAIL
-        )
+        return Verdict(question_id, False, "give the letter(s) of your choice, e.g. 'b' or 'a, c'.", FAIL)
     if answer_hash(answer, salt=question_id) == correct_hash:
         return Verdict(question_id, True, "right.", "passed")
     return Verdict(question_id, False, "not this one -- think again (re-read the statement).", FAIL)
@@ -204,3 +196,4 @@ def quiz(
     lines = "; ".join(f"({k}) {v}" for k, v in choices.items())
     v = check_choice(question_id, answer, correct_hash)
     return Verdict(v.question, v.passed, f"{prompt} {lines} -- {v.message}", v.status)
+

@@ -111,9 +111,7 @@ class Report:
 
     def _repr_html_(self) -> str:
         rows = "".join(v._repr_html_() for v in self.verdicts)
-        return (
-            f'<div class="cl-check-report"><p><b>{html.escape(self._summary())}</b></p>{rows}</div>'
-        )
+        return f'<div class="cl-check-report"><p><b>{html.escape(self._summary())}</b></p>{rows}</div>'
 
 
 class AnswerProblem(Exception):
@@ -234,9 +232,7 @@ def as_vector(
     if answer is None:
         raise AnswerProblem(f"{name} is None -- did a function forget to `return`?")
     if isinstance(answer, (str, bytes, dict, set)) or callable(answer):
-        raise AnswerProblem(
-            f"{what} of shape {shape} is expected, but {name} is {_describe(answer)}."
-        )
+        raise AnswerProblem(f"{what} of shape {shape} is expected, but {name} is {_describe(answer)}.")
     if isinstance(answer, (bool, np.bool_)):
         raise AnswerProblem(f"{what} of shape {shape} is expected, but {name} is a bool.")
     try:
@@ -254,9 +250,7 @@ def as_vector(
             hint = f" (it has the right number of entries: reshape it to {shape})"
         else:
             hint = ""
-        raise AnswerProblem(
-            f"{what} of shape {shape} is expected; {name} has shape {arr.shape}{hint}."
-        )
+        raise AnswerProblem(f"{what} of shape {shape} is expected; {name} has shape {arr.shape}{hint}.")
     if np.isnan(arr).any():
         raise AnswerProblem(f"{name} contains NaN -- a 0/0 somewhere (a zero-length vector?).")
     if np.isinf(arr).any():
@@ -351,9 +345,7 @@ def answer_hash(answer: object, salt: str = "") -> str:
     return hashlib.sha256(text.encode()).hexdigest()[:16]
 
 
-def run_validate(
-    qid: str, validate: Callable[[object], tuple[bool, str]], answer: object
-) -> Verdict:
+def run_validate(qid: str, validate: Callable[[object], tuple[bool, str]], answer: object) -> Verdict:
     """Apply ``validate`` to ``answer`` and wrap the outcome in a :class:`Verdict`; never raises."""
     try:
         passed, message = validate(answer)
@@ -376,9 +368,7 @@ def register_choice(qid: str, answer_name: str, correct_hash: str, title: str = 
 
     def validate(answer):
         if is_unanswered(answer) or answer is None:
-            raise AnswerProblem(
-                "not answered yet (replace the ... by your choice).", unanswered=True
-            )
+            raise AnswerProblem("not answered yet (replace the ... by your choice).", unanswered=True)
         if isinstance(answer, float) or callable(answer):
             raise AnswerProblem("give the letter(s) of your choice, e.g. 'b' or 'a, c'.")
         if answer_hash(answer, salt=qid) == correct_hash:
@@ -420,9 +410,7 @@ def as_sympy_expression(answer: object, name: str, allowed: dict[str, object]) -
     import sympy as sp
 
     if is_unanswered(answer):
-        raise AnswerProblem(
-            "not answered yet (replace the ... by a sympy expression).", unanswered=True
-        )
+        raise AnswerProblem("not answered yet (replace the ... by a sympy expression).", unanswered=True)
     if answer is None:
         raise AnswerProblem(f"{name} is None -- did a function forget to `return`?")
     if isinstance(answer, (str, bytes, bool, np.bool_, dict, set, list, tuple)) or callable(answer):
@@ -430,9 +418,7 @@ def as_sympy_expression(answer: object, name: str, allowed: dict[str, object]) -
     try:
         expr = sp.sympify(answer, strict=True)
     except (sp.SympifyError, TypeError, ValueError):
-        raise AnswerProblem(
-            f"{name} must be a sympy expression, but it is {_describe(answer)}."
-        ) from None
+        raise AnswerProblem(f"{name} must be a sympy expression, but it is {_describe(answer)}.") from None
     if not isinstance(expr, sp.Expr) or getattr(expr, "is_Matrix", False):
         raise AnswerProblem(
             f"{name} must be a single sympy expression, but it is a {type(expr).__name__}."

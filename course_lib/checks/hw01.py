@@ -47,9 +47,7 @@ def _q1(answer):
             f"a unit tangent has length 1, yours has length {n:.6g}: divide c'(t) by its length ‖c'(t)‖."
         )
     if abs(cross2(T, d)) > 1e-9 * np.linalg.norm(d):
-        return fail(
-            "T is not parallel to the velocity c'(1): differentiate each coordinate, then normalize."
-        )
+        return fail("T is not parallel to the velocity c'(1): differentiate each coordinate, then normalize.")
     if np.dot(T, d) < 0:
         return fail(
             "T is parallel to the tangent line but points backwards: T = c'/‖c'‖ points the way "
@@ -71,9 +69,7 @@ def _q2(func):
     for q1, q2, f1, f2 in _Q2_CASES:
         dim = q1.size
         res = call_answer(func, q1.copy(), q2.copy(), f1, f2, name="chain_rule_derivatives")
-        res = as_vector(
-            res, (2, dim), "the returned value", "an array [first derivative, second derivative]"
-        )
+        res = as_vector(res, (2, dim), "the returned value", "an array [first derivative, second derivative]")
         if not close(res[0], q1 * f1):
             return fail(
                 "the first derivative of q(f(s)) is wrong: by the chain rule it is q'(f(s)) times f'(s)."
@@ -84,17 +80,13 @@ def _q2(func):
                 "rule -- two terms."
             )
         if close(res[1], q2 * f1 + q1 * f2) and not close(res[1], q2 * f1**2 + q1 * f2):
-            return fail(
-                "the second derivative: differentiating q'(f(s)) gives q''(f(s)) f'(s) -- one more f'."
-            )
+            return fail("the second derivative: differentiating q'(f(s)) gives q''(f(s)) f'(s) -- one more f'.")
         if not close(res[1], q2 * f1**2 + q1 * f2):
             return fail("the second derivative is wrong: apply the chain rule to q'(f(s)) f'(s).")
     return ok(f"correct on {len(_Q2_CASES)} test cases (plane and space).")
 
 
-register_choice(
-    "hw01.q3", "answer_q3", "0dcc2129482c5605", "orientation-preserving change of variables"
-)
+register_choice("hw01.q3", "answer_q3", "0dcc2129482c5605", "orientation-preserving change of variables")
 
 
 def _kappa_parabola(u: float) -> float:
@@ -109,9 +101,7 @@ def _q4(answer):
     if math.isclose(k, expected, rel_tol=1e-9):
         return ok("correct.")
     if math.isclose(k, -expected, rel_tol=1e-9):
-        return fail(
-            "the size is right but the sign is not: the parabola turns left (counter-clockwise)."
-        )
+        return fail("the size is right but the sign is not: the parabola turns left (counter-clockwise).")
     if math.isclose(k, 1 / expected, rel_tol=1e-9) or math.isclose(k, -1 / expected, rel_tol=1e-9):
         return fail("that is the radius of curvature 1/|κ|, not the curvature κ.")
     if math.isclose(k, expected * 5**0.5, rel_tol=1e-9):
@@ -131,9 +121,7 @@ def _q5(answer):
         return fail("one term is missing: the chain rule gives q''(f) f'² + q'(f) f''.")
     if close(v, q2):
         return fail("that is q''(1) of the original curve; the reparametrization changes it.")
-    return fail(
-        "not q̃''(1): evaluate q', q'' at u = f(1) and f', f'' at s = 1, then use your chain rule."
-    )
+    return fail("not q̃''(1): evaluate q', q'' at u = f(1) and f', f'' at s = 1, then use your chain rule.")
 
 
 register_choice("hw01.q6", "answer_q6", "a98d57c2f9308dc0", "which quantities are intrinsic")
@@ -150,3 +138,4 @@ def _q7(answer):
     if s < 2**0.5:
         return fail("too short: no curve between two points is shorter than the straight chord.")
     return fail("not the arc length: integrate the speed ‖q'(u)‖ from 0 to 1.")
+

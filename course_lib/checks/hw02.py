@@ -61,9 +61,7 @@ def _q2(answer):
         return ok("correct: both (7.1) and (7.2) hold.")
     if close(b1 * b1 * Q2["q2"] - b2 * Q2["q1"], Q2["r2"]):
         return fail("the sign of β2: (7.2) reads r''(0) = β1² q''(1) + β2 q'(1).")
-    return fail(
-        "β1 is right; with your β2, r''(0) = β1² q''(1) + β2 q'(1) (7.2) fails -- β1 squared?"
-    )
+    return fail("β1 is right; with your β2, r''(0) = β1² q''(1) + β2 q'(1) (7.2) fails -- β1 squared?")
 
 
 _Q3_CASES = [
@@ -81,9 +79,7 @@ def _q3(func):
     for q1, r1, expected in _Q3_CASES:
         got = call_answer(func, np.array(q1), np.array(r1), name="is_g1")
         if not isinstance(got, (bool, np.bool_)):
-            raise AnswerProblem(
-                f"is_g1 must return True or False; it returned a {type(got).__name__}."
-            )
+            raise AnswerProblem(f"is_g1 must return True or False; it returned a {type(got).__name__}.")
         if bool(got) != expected:
             why = {
                 True: "they are positive multiples of each other (β1 > 0 exists)",
@@ -104,9 +100,7 @@ def _chain_rule_coefficient(order: int, k: int):
     expr = qs[0] * u.diff(t)  # first derivative of q(u(t))
     for _ in range(order - 1):
         # d/dt of Q_k is Q_{k+1} u'
-        expr = sum(
-            expr.diff(Qk) * qs[i + 1] * u.diff(t) for i, Qk in enumerate(qs[:-1])
-        ) + expr.diff(t)
+        expr = sum(expr.diff(Qk) * qs[i + 1] * u.diff(t) for i, Qk in enumerate(qs[:-1])) + expr.diff(t)
     betas = sp.symbols(f"beta1:{order + 1}")
     for j in range(order, 0, -1):
         expr = expr.subs(u.diff(t, j), betas[j - 1])
@@ -120,18 +114,14 @@ def _q4(answer):
     expected, betas = _chain_rule_coefficient(4, 2)
     expr = as_sympy_expression(answer, "answer_q4", {str(b): b for b in betas})
     if sp.expand(expr - expected) == 0:
-        return ok(
-            "correct -- and it is what the chain rule gives, not what seed 001 eq. (2.7) prints."
-        )
+        return ok("correct -- and it is what the chain rule gives, not what seed 001 eq. (2.7) prints.")
     b1, b2 = betas[0], betas[1]
     if sp.expand(expr - (4 * b1 * b2 + 3 * b2**2)) == 0:
         return fail(
             "that is seed 001 eq. (2.7) as transcribed -- which has a typo.  Derive it yourself: "
             "differentiate q(u(t)) four times."
         )
-    return fail(
-        "not the coefficient of q''(1) in r''''(0); collect the q''-terms after four differentiations."
-    )
+    return fail("not the coefficient of q''(1) in r''''(0); collect the q''-terms after four differentiations.")
 
 
 @register("hw02.q5", "answer_q5", "r''(0) from q'(1), q''(1), β1, β2")
@@ -149,3 +139,5 @@ def _q5(answer):
 
 register_choice("hw02.q6", "answer_q6", "d73c296c813d278a", "β1 = 1, β2 = 0 at a joint")
 register_choice("hw02.q7", "answer_q7", "9fea3db0a9c4d70b", "read the picture: G1 but not G2")
+
+

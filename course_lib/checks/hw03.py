@@ -65,9 +65,7 @@ def _compare_points(p: np.ndarray, d: np.ndarray, knots) -> str | None:
     for k in range(ref.shape[0]):
         if k % 3 == 0 and 0 < k < 3 * L:
             i = k // 3
-            why = _joint_problem(
-                p[k - 1], p[k], p[k + 1], knots[i] - knots[i - 1], knots[i + 1] - knots[i]
-            )
+            why = _joint_problem(p[k - 1], p[k], p[k + 1], knots[i] - knots[i - 1], knots[i + 1] - knots[i])
             if why and close(p[k - 1], ref[k - 1]) and close(p[k + 1], ref[k + 1]):
                 return f"joint {i} (p_{k}): {why}"
         elif not close(p[k], ref[k]):
@@ -81,10 +79,7 @@ def _compare_points(p: np.ndarray, d: np.ndarray, knots) -> str | None:
 _Q2_CASES = [
     (D, (0.0, 1.0, 3.0, 4.0)),
     (D[:6], (0.0, 0.5, 2.0)),
-    (
-        np.array([[0, 0, 0], [1, 0, 1], [2, 1, 1], [3, 3, 0], [4, 3, 2], [5, 2, 2.0]]),
-        (1.0, 4.0, 5.0),
-    ),
+    (np.array([[0, 0, 0], [1, 0, 1], [2, 1, 1], [3, 3, 0], [4, 3, 2], [5, 2, 2.0]]), (1.0, 4.0, 5.0)),
 ]
 
 
@@ -119,9 +114,7 @@ def _q3(answer):
     return ok("correct for all three knot sequences.")
 
 
-register_choice(
-    "hw03.q4", "answer_q4", "499d39e459116bc7", "which knot sequence gives C1 in local parameters"
-)
+register_choice("hw03.q4", "answer_q4", "499d39e459116bc7", "which knot sequence gives C1 in local parameters")
 
 _Q5_KNOTS = KNOTS_Q3[2]
 
@@ -141,9 +134,7 @@ def _q5(answer):
             "1 / (t_i - t_{i-1}) multiplies it."
         )
     if close(v[0], v[1]):
-        return fail(
-            "your two derivatives agree, but they are not the spline's: recompute p_3 first."
-        )
+        return fail("your two derivatives agree, but they are not the spline's: recompute p_3 first.")
     return fail("not the one-sided derivatives at t_1: differentiate each cubic segment in t.")
 
 
@@ -158,12 +149,8 @@ def _q6(answer):
     if sp.cancel(sp.together(expr - left)) == 0:
         return ok("correct: t1 cancels, and the right derivative gives the same expression.")
     if sp.cancel(sp.together(expr - 3 * (p3 - p2))) == 0:
-        return fail(
-            "that is the derivative in the local parameter; divide by t1 - t0 (chain rule)."
-        )
-    return fail(
-        "not the left derivative 3 (p3 - p2) / (t1 - t0) with p3 from the knots; simplify it."
-    )
+        return fail("that is the derivative in the local parameter; divide by t1 - t0 (chain rule).")
+    return fail("not the left derivative 3 (p3 - p2) / (t1 - t0) with p3 from the knots; simplify it.")
 
 
 _Q7_CASES = [(0.0, 1.0, 3.0, 4.0), (0.0, 2.0, 4.0), (1.0, 1.5, 3.5, 4.0, 8.0)]
@@ -174,9 +161,7 @@ def _q7(func):
     for knots in _Q7_CASES:
         t = np.array(knots)
         res = call_answer(func, t.copy(), name="knot_ratio_beta1")
-        b = as_vector(
-            res, (t.size - 2,), f"the result for {t.size} knots", "one β1 per interior joint"
-        )
+        b = as_vector(res, (t.size - 2,), f"the result for {t.size} knots", "one β1 per interior joint")
         dt = np.diff(t)
         if close(b, dt[1:] / dt[:-1]):
             continue

@@ -26,9 +26,7 @@ Q3 = {"V": np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 3.0], [4.0, 2.0]]), "beta1": 
 Q5 = {"W_left": np.array([2.0, 1.0]), "W_right": np.array([5.0, 4.0]), "beta1": 2.0}
 
 
-def _ray_problem(
-    point, origin, direction, name: str, origin_name: str, dir_name: str
-) -> str | None:
+def _ray_problem(point, origin, direction, name: str, origin_name: str, dir_name: str) -> str | None:
     """Why ``point`` is not on the open ray from ``origin`` along ``direction``."""
     v = point - origin
     if np.linalg.norm(v) < 1e-12 * max(1.0, np.linalg.norm(origin)):
@@ -67,9 +65,7 @@ def _stitch_problem(V: np.ndarray, W: np.ndarray, b1: float, b2: float) -> str |
         return "W0 must be V_d: the curves must meet (G0)."
     if not close(r1, b1 * q1):
         why = _ray_problem(W[1], V[-1], V[-1] - V[-2], "W1", "V_d", "V_d − V_{d−1}")
-        return (
-            why or "W1 is on the right ray but r'(0) ≠ β1 q'(1) (eq. 7.1): its distance is wrong."
-        )
+        return why or "W1 is on the right ray but r'(0) ≠ β1 q'(1) (eq. 7.1): its distance is wrong."
     if not close(r2, b1 * b1 * q2 + b2 * q1):
         return "W0, W1 are right but W2 breaks the G2 constraint r''(0) = β1² q''(1) + β2 q'(1) (eq. 7.2)."
     return None
@@ -78,13 +74,7 @@ def _stitch_problem(V: np.ndarray, W: np.ndarray, b1: float, b2: float) -> str |
 _Q2_CASES = [
     (np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 3.0], [4.0, 2.0]]), 1.5, 1.0),
     (np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]]), 0.5, -2.0),
-    (
-        np.array(
-            [[0.0, 0.0, 0.0], [1.0, 0.0, 1.0], [2.0, 1.0, 1.0], [2.0, 2.0, 0.0], [3.0, 2.0, 1.0]]
-        ),
-        2.0,
-        3.0,
-    ),
+    (np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 1.0], [2.0, 1.0, 1.0], [2.0, 2.0, 0.0], [3.0, 2.0, 1.0]]), 2.0, 3.0),
 ]
 
 
@@ -93,9 +83,7 @@ def _q2(func):
     for V, b1, b2 in _Q2_CASES:
         d = V.shape[0] - 1
         res = call_answer(func, V.copy(), b1, b2, name="g2_stitch")
-        W = as_vector(
-            res, (3, V.shape[1]), "the result", "an array of the three points [W0, W1, W2]"
-        )
+        W = as_vector(res, (3, V.shape[1]), "the result", "an array of the three points [W0, W1, W2]")
         why = _stitch_problem(V, W, b1, b2)
         if why:
             hint = " (it works for cubics: where does the degree d enter?)" if d != 3 else ""
@@ -125,10 +113,7 @@ def _q3(answer):
 
 _Q4_CASES = [
     (np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]]), np.array([1.0, 2.0, 0.5])),
-    (
-        np.array([[0.0, 0.0], [2.0, 2.0], [4.0, 0.0], [6.0, 2.0], [8.0, 0.0]]),
-        np.array([0.25, 1.0, 3.0, 1.5]),
-    ),
+    (np.array([[0.0, 0.0], [2.0, 2.0], [4.0, 0.0], [6.0, 2.0], [8.0, 0.0]]), np.array([0.25, 1.0, 3.0, 1.5])),
 ]
 
 
@@ -137,25 +122,16 @@ def _q4(func):
     for V, beta1 in _Q4_CASES:
         m = V.shape[0] - 1
         res = call_answer(func, V.copy(), beta1.copy(), name="quadratic_beta_spline")
-        W = as_vector(
-            res,
-            (m - 1, 3, 2),
-            f"the result for m = {m}",
-            "an array of the m − 1 quadratic polygons",
-        )
+        W = as_vector(res, (m - 1, 3, 2), f"the result for m = {m}", "an array of the m − 1 quadratic polygons")
         for k in range(m - 1):  # segment i = k + 1
             i = k + 1
             if not close(W[k, 1], V[i]):
-                return fail(
-                    f"segment {i}: the interior Bézier vertex W_{{i,1}} must be V_i (eq. 18)."
-                )
+                return fail(f"segment {i}: the interior Bézier vertex W_{{i,1}} must be V_i (eq. 18).")
             for end, leg in ((0, i - 1), (2, i)):
                 a, b = V[leg], V[leg + 1]
                 s = np.dot(W[k, end] - a, b - a) / np.dot(b - a, b - a)
                 if not (close(W[k, end], a + s * (b - a)) and 0 < s < 1):
-                    return fail(
-                        f"segment {i}: its junction vertices must lie on the legs V_{{i−1}}V_i and V_iV_{{i+1}}."
-                    )
+                    return fail(f"segment {i}: its junction vertices must lie on the legs V_{{i−1}}V_i and V_iV_{{i+1}}.")
                 if abs(s - 1 / (1 + beta1[leg])) > 1e-9:
                     return fail(
                         f"segment {i}: the junction vertex on leg V_{leg}V_{leg + 1} must divide it "
@@ -165,9 +141,7 @@ def _q4(func):
             q1 = 2 * (W[k, 2] - W[k, 1])
             r1 = 2 * (W[k + 1, 1] - W[k + 1, 0])
             if not close(W[k, 2], W[k + 1, 0]) or not close(r1, beta1[k + 1] * q1):
-                return fail(
-                    f"segments {k + 1} and {k + 2} do not meet with q'_{{i+1}}(0) = β1_i q'_i(1) (eq. 16)."
-                )
+                return fail(f"segments {k + 1} and {k + 2} do not meet with q'_{{i+1}}(0) = β1_i q'_i(1) (eq. 16).")
     return ok(f"correct on {len(_Q4_CASES)} control polygons with joint-wise β1.")
 
 
@@ -185,6 +159,5 @@ def _q5(answer):
     return fail("on the segment, but it must divide it in the ratio 1 : β1.")
 
 
-register_choice(
-    "hw04.q6", "answer_q6", "1aad7e631232e4b8", "β1 = 1, β2 = 0 in a cubic G2 Beta-spline"
-)
+register_choice("hw04.q6", "answer_q6", "1aad7e631232e4b8", "β1 = 1, β2 = 0 in a cubic G2 Beta-spline")
+

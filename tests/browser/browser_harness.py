@@ -48,11 +48,8 @@ def find_chromium() -> str | None:
     """Path of a Chromium executable: ``$COURSE_CHROMIUM`` when set (and then only that),
     else /usr/bin/chromium (Debian) or ``chromium``/``chromium-browser`` on PATH."""
     override = os.environ.get(CHROMIUM_ENV)
-    cands = (
-        (override,)
-        if override
-        else ("/usr/bin/chromium", shutil.which("chromium"), shutil.which("chromium-browser"))
-    )
+    cands = (override,) if override else (
+        "/usr/bin/chromium", shutil.which("chromium"), shutil.which("chromium-browser"))
     for cand in cands:
         if cand and os.path.isfile(cand) and os.access(cand, os.X_OK):
             return cand
@@ -69,19 +66,16 @@ class PageLog:
         self.http_errors: list[str] = []
 
     def problems(self, ignore: tuple[str, ...] = ()) -> list[str]:
-        msgs = (
-            [f"console: {m}" for m in self.console_errors]
-            + [f"pageerror: {m}" for m in self.page_errors]
-            + [f"http: {m}" for m in self.http_errors]
-        )
+        msgs = [f"console: {m}" for m in self.console_errors] + [
+            f"pageerror: {m}" for m in self.page_errors
+        ] + [f"http: {m}" for m in self.http_errors]
         return [m for m in msgs if not any(s in m for s in ignore)]
 
 
 def new_page(browser, *, width: int = 1400, height: int = 1000):
     """A page in a fresh context that may only talk to 127.0.0.1; returns ``(context, page, log)``."""
-    context = browser.new_context(
-        viewport={"width": width, "height": height}, device_scale_factor=1
-    )
+    context = browser.new_context(viewport={"width": width, "height": height},
+                                  device_scale_factor=1)
     page = context.new_page()
     log = PageLog()
 
@@ -154,12 +148,8 @@ class Server:
     # -- configuration
     def env(self) -> dict:
         env = dict(os.environ)
-        for name, sub in (
-            ("JUPYTER_RUNTIME_DIR", "rt"),
-            ("JUPYTER_CONFIG_DIR", "config"),
-            ("IPYTHONDIR", "ipython"),
-            ("MPLCONFIGDIR", "mpl"),
-        ):
+        for name, sub in (("JUPYTER_RUNTIME_DIR", "rt"), ("JUPYTER_CONFIG_DIR", "config"),
+                          ("IPYTHONDIR", "ipython"), ("MPLCONFIGDIR", "mpl")):
             (self.base / sub).mkdir(exist_ok=True)
             env[name] = str(self.base / sub)
         env.pop("JUPYTER_TOKEN", None)
@@ -168,27 +158,18 @@ class Server:
     def lab_command(self) -> list[str]:
         settings = self.base / "settings"
         for rel, content in (
-            (
-                "@jupyterlab/apputils-extension/notification.jupyterlab-settings",
-                {"fetchNews": "false", "checkForUpdates": False},
-            ),
-            (
-                "@jupyterlab/notebook-extension/tracker.jupyterlab-settings",
-                {"autoStartDefaultKernel": True},
-            ),
+            ("@jupyterlab/apputils-extension/notification.jupyterlab-settings",
+             {"fetchNews": "false", "checkForUpdates": False}),
+            ("@jupyterlab/notebook-extension/tracker.jupyterlab-settings",
+             {"autoStartDefaultKernel": True}),
         ):
             f = settings / rel
             f.parent.mkdir(parents=True, exist_ok=True)
             f.write_text(json.dumps(content))
         cmd = [
-            sys.executable,
-            "-m",
-            "jupyterlab",
-            "--no-browser",
-            "--ServerApp.ip=127.0.0.1",
-            f"--ServerApp.port={self.port}",
-            "--ServerApp.port_retries=0",
-            f"--IdentityProvider.token={self.token}",
+            sys.executable, "-m", "jupyterlab", "--no-browser",
+            "--ServerApp.ip=127.0.0.1", f"--ServerApp.port={self.port}",
+            "--ServerApp.port_retries=0", f"--IdentityProvider.token={self.token}",
             f"--ServerApp.root_dir={self.root}",
             f"--LabApp.user_settings_dir={settings}",
             f"--LabApp.workspaces_dir={self.base / 'ws'}",
@@ -198,10 +179,8 @@ class Server:
             "--LabApp.extension_manager=readonly",  # never asks PyPI
             # server extensions the test does not use: less to import on a busy machine
             # (not jupyter_lsp: without it the page's GET /lsp/status is a 404 error)
-            *(
-                f"--ServerApp.jpserver_extensions={ext}=False"
-                for ext in ("jupyter_server_terminals", "voila.server_extension", "notebook_shim")
-            ),
+            *(f"--ServerApp.jpserver_extensions={ext}=False" for ext in (
+                "jupyter_server_terminals", "voila.server_extension", "notebook_shim")),
         ]
         if os.geteuid() == 0:
             cmd.append("--allow-root")
@@ -209,16 +188,9 @@ class Server:
 
     def voila_command(self, notebook: str) -> list[str]:
         return [
-            sys.executable,
-            "-m",
-            "voila",
-            str(self.root / notebook),
-            "--no-browser",
-            "--Voila.ip=127.0.0.1",
-            f"--port={self.port}",
-            "--Voila.port_retries=0",
-            f"--Voila.token={self.token}",
-            f"--Voila.root_dir={self.root}",
+            sys.executable, "-m", "voila", str(self.root / notebook), "--no-browser",
+            "--Voila.ip=127.0.0.1", f"--port={self.port}", "--Voila.port_retries=0",
+            f"--Voila.token={self.token}", f"--Voila.root_dir={self.root}",
             "--show_tracebacks=True",
         ]
 
@@ -227,13 +199,8 @@ class Server:
         """Start the server process (does not wait; see ``wait_ready``)."""
         self._log = self.log_path.open("wb")
         self.proc = subprocess.Popen(
-            cmd,
-            cwd=self.root,
-            env=self.env(),
-            stdout=self._log,
-            stderr=subprocess.STDOUT,
-            stdin=subprocess.DEVNULL,
-            start_new_session=True,
+            cmd, cwd=self.root, env=self.env(), stdout=self._log, stderr=subprocess.STDOUT,
+            stdin=subprocess.DEVNULL, start_new_session=True,
         )
 
     def wait_ready(self, timeout: float = 60.0) -> None:
@@ -241,9 +208,8 @@ class Server:
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
             if self.proc.poll() is not None:
-                raise RuntimeError(
-                    f"{self.kind} server exited with {self.proc.returncode}:\n{self.log_tail()}"
-                )
+                raise RuntimeError(f"{self.kind} server exited with {self.proc.returncode}:\n"
+                                   f"{self.log_tail()}")
             if self._ready():
                 return
             time.sleep(0.2)
@@ -258,9 +224,8 @@ class Server:
                     return True
             except OSError:
                 return False
-        req = urllib.request.Request(
-            self.url + "/api/status", headers={"Authorization": f"token {self.token}"}
-        )
+        req = urllib.request.Request(self.url + "/api/status",
+                                     headers={"Authorization": f"token {self.token}"})
         try:
             with urllib.request.urlopen(req, timeout=2) as r:
                 return r.status == 200
@@ -270,15 +235,12 @@ class Server:
     def start_kernel_for(self, notebook: str) -> None:
         """Create the notebook's session (and kernel) through the REST API, so the kernel
         starts while the browser loads JupyterLab, which then attaches to it."""
-        body = json.dumps(
-            {"path": notebook, "name": notebook, "type": "notebook", "kernel": {"name": "python3"}}
-        ).encode()
+        body = json.dumps({"path": notebook, "name": notebook, "type": "notebook",
+                           "kernel": {"name": "python3"}}).encode()
         req = urllib.request.Request(
-            self.url + "/api/sessions",
-            data=body,
-            method="POST",
-            headers={"Authorization": f"token {self.token}", "Content-Type": "application/json"},
-        )
+            self.url + "/api/sessions", data=body, method="POST",
+            headers={"Authorization": f"token {self.token}",
+                     "Content-Type": "application/json"})
         with urllib.request.urlopen(req, timeout=60) as r:
             assert r.status == 201, r.status
 

@@ -16,17 +16,13 @@ def chromium_path() -> str:
     try:
         import playwright.sync_api  # noqa: F401
     except ImportError as exc:
-        pytest.skip(
-            f"browser test skipped: Playwright is not installed ({exc}); "
-            "install the test extras: pip install -e '.[test]'"
-        )
+        pytest.skip(f"browser test skipped: Playwright is not installed ({exc}); "
+                    "install the test extras: pip install -e '.[test]'")
     path = find_chromium()
     if path is None:
-        pytest.skip(
-            f"browser test skipped: no Chromium found (${CHROMIUM_ENV}, /usr/bin/chromium "
-            "or PATH); install it with `bash tools/ensure-browser` (Debian, root) "
-            "or `apt-get install chromium`"
-        )
+        pytest.skip(f"browser test skipped: no Chromium found (${CHROMIUM_ENV}, /usr/bin/chromium "
+                    "or PATH); install it with `bash tools/ensure-browser` (Debian, root) "
+                    "or `apt-get install chromium`")
     return path
 
 
@@ -53,3 +49,5 @@ def artifacts() -> Path:
     """test-artifacts/ (gitignored): screenshots, server logs, timings."""
     ARTIFACTS.mkdir(exist_ok=True)
     return ARTIFACTS
+
+

@@ -72,9 +72,8 @@ def changed_pixels(a: bytes, b: bytes) -> int:
     return int(np.count_nonzero(np.any(pa != pb, axis=-1)))
 
 
-def wait_for_new_picture(
-    locator, before: bytes, *, timeout: float = 10.0, min_pixels: int = 30
-) -> int:
+def wait_for_new_picture(locator, before: bytes, *, timeout: float = 10.0,
+                         min_pixels: int = 30) -> int:
     """Screenshot ``locator`` until it differs from ``before`` in >= ``min_pixels`` pixels."""
     deadline = time.monotonic() + timeout
     n = 0
@@ -149,7 +148,7 @@ def drag(page, x0: float, y0: float, x1: float, y1: float, steps: int = 8) -> No
 
 # Kernel side of the probe: find the first demo, tag its box, report its geometry in CSS
 # pixels relative to the canvas' top-left corner.  Runs with store_history=False.
-PROBE = r"""
+PROBE = r'''
 def _cl_browser_probe(tag=False):
     import json
 
@@ -191,7 +190,7 @@ def _cl_browser_probe(tag=False):
         "figure": [float(fig.bbox.width / r), H / r],
         "joint": joint,
     })
-"""
+'''
 
 EXECUTE_JS = """async (code) => {
   const kernel = window.jupyterapp.shell.currentWidget.sessionContext.session.kernel;
@@ -357,22 +356,19 @@ class TestJupyterLab:
         canvas = demo.locator(CANVAS).first
         canvas.scroll_into_view_if_needed()
         box = canvas.bounding_box()
-        assert (
-            abs(box["width"] - geo["figure"][0]) < 2 and abs(box["height"] - geo["figure"][1]) < 2
-        ), f"canvas {box} is not the figure's size {geo['figure']}"
+        assert abs(box["width"] - geo["figure"][0]) < 2 and abs(
+            box["height"] - geo["figure"][1]
+        ) < 2, f"canvas {box} is not the figure's size {geo['figure']}"
         # the point to drag: the one nearest the selected joint (or the first), inside the axes
         x0, y0, x1, y1 = geo["axes"]
         inside = [
-            i
-            for i, (x, y) in enumerate(geo["points"])
+            i for i, (x, y) in enumerate(geo["points"])
             if x0 + 25 < x < x1 - 25 and y0 + 25 < y < y1 - 25
         ]
         assert inside, f"no design point well inside the axes: {geo}"
         ref = geo["joint"] or geo["points"][inside[0]]
-        k = min(
-            inside,
-            key=lambda i: (geo["points"][i][0] - ref[0]) ** 2 + (geo["points"][i][1] - ref[1]) ** 2,
-        )
+        k = min(inside, key=lambda i: (geo["points"][i][0] - ref[0]) ** 2
+                + (geo["points"][i][1] - ref[1]) ** 2)
         px, py = geo["points"][k]
         cx, cy = (x0 + x1) / 2, (y0 + y1) / 2  # move 30 px towards the axes' centre
         d = max(((cx - px) ** 2 + (cy - py) ** 2) ** 0.5, 1e-9)

@@ -276,10 +276,7 @@ def test_check_all_reports_missing_and_deleted_names():
     # its own CSS class: cl-report is the live report of the widgets (tests/browser)
     assert 'class="cl-check-report"' in report._repr_html_()
     assert "cl-report" not in report._repr_html_().replace("cl-check-report", "")
-    full = {
-        name: RIGHT[q]
-        for q, name in ((q, checks.registry()[q].answer_name) for q in questions("hw01"))
-    }
+    full = {name: RIGHT[q] for q, name in ((q, checks.registry()[q].answer_name) for q in questions("hw01"))}
     assert check_all(full, "hw01").all_passed
     assert not check_all({}, None).all_passed
 
@@ -298,13 +295,7 @@ def test_choice_and_value_helpers_for_lectures():
     assert not v.passed and "0.123" not in v.message
     assert check_value("l", [1, 2], expected=np.array([1.0, 2.0])).passed
     assert "shape" in check_value("l", [1, 2, 3], expected=np.array([1.0, 2.0])).message
-    q = quiz(
-        "lecture01.q3",
-        "Which is intrinsic?",
-        ["speed", "unit tangent"],
-        "b",
-        answer_hash("b", salt="lecture01.q3"),
-    )
+    q = quiz("lecture01.q3", "Which is intrinsic?", ["speed", "unit tangent"], "b", answer_hash("b", salt="lecture01.q3"))
     assert q.passed and "(b) unit tangent" in q.message
 
 
@@ -317,7 +308,9 @@ def test_verdict_display():
 
 
 # ----------------------------------------------------------- the homework's claims, verified
-@pytest.mark.parametrize("qid", [q for q in ALL_IDS if isinstance(RIGHT[q], str)])
+@pytest.mark.parametrize(
+    "qid", [q for q in ALL_IDS if isinstance(RIGHT[q], str)]
+)
 def test_choice_questions_accept_only_the_right_letters(qid):
     right = set(RIGHT[qid].replace(",", " ").lower().split())
     for letter in "abcde":

@@ -41,17 +41,8 @@ def test_math_modules_import_light():
 # imported in turn in one fresh interpreter; the first one that pulls in a heavy
 # package is named.  (Added with the benchmarks, issue "Benchmarks".)
 ALL_MATH = [
-    "bezier",
-    "curve",
-    "differential_geometry",
-    "reparametrization",
-    "beta_constraints",
-    "continuity",
-    "stitching",
-    "catmull_rom",
-    "beta_splines",
-    "knot_splines",
-    "higher_order",
+    "bezier", "curve", "differential_geometry", "reparametrization", "beta_constraints",
+    "continuity", "stitching", "catmull_rom", "beta_splines", "knot_splines", "higher_order",
     "surfaces",
 ]
 LIGHT_ONLY = ["sympy", "matplotlib", "ipywidgets"]
