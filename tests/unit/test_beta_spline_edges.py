@@ -217,3 +217,23 @@ def test_catmull_rom_extreme_beta1_is_finite_or_refused(b1):
     if b1 == 1e300:
         with pytest.raises(ValueError, match="float range"):
             catmull_rom(V7 * 1e10, b1)
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    e1=st.floats(-300.0, 300.0),
+    b2=st.one_of(st.floats(-1e6, 1e6), st.sampled_from([0.0, -4.0, -1.5])),
+    local=st.booleans(),
+)
+def test_any_beta1_gives_finite_points_or_a_named_error(e1, b2, local):
+    """β1 = 10^e1 anywhere in the float range: finite control points, or the one named
+    ValueError of a true pole (Barsky's delta = 0) -- never NaN or inf."""
+    b1 = 10.0**e1
+    b1v = np.array([1.0, 1.0, b1, b1, b1, 1.0, 1.0]) if local else b1
+    b2v = np.array([0.0, 0.0, b2, b2, b2, 0.0, 0.0]) if local else b2
+    try:
+        c = cubic_beta_spline(V7, b1v, b2v)
+    except ValueError as exc:
+        assert "sum to zero" in str(exc) or "no limit" in str(exc)
+        return
+    assert np.all(np.isfinite(np.array(c.segments)))
