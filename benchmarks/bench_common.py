@@ -38,7 +38,7 @@ class Sizes:
     arc_segments: int  # segments of the spline whose arc length is timed (item 2)
 
 
-FULL = Sizes("full", 10**6, 10**4, 7, 3, tuple(range(1, 9)), 10, 15, 50)
+FULL = Sizes("full", 10**6, 10**4, 7, 3, (*range(1, 9), 10), 10, 15, 50)
 QUICK = Sizes("quick", 10**5, 10**3, 3, 1, tuple(range(1, 6)), 3, 3, 50)
 TINY = Sizes("tiny", 2_000, 50, 2, 1, (1, 2, 3), 1, 1, 4)  # the smoke test
 

@@ -17,7 +17,9 @@ reference is measured in the same run):
 4. widget update latency (compute + Agg redraw), from ``widget_latency.py``;
 5. ``import course_lib`` time vs ``import numpy`` and the heavy-package check;
 6. nbval time per notebook and for the whole notebook suite;
-7. every joint of every glyph of DejaVu Sans classified (``bench_outlines.py``) vs the
+7. the continuity report per joint vs a direct numpy G2 check (``bench_continuity.py``);
+8. building and first evaluation of a 10^5-segment curve vs scipy (``bench_large_curve.py``);
+9. every joint of every glyph of DejaVu Sans classified (``bench_outlines.py``) vs the
    continuity report per joint.
 
 Nothing here is a test: the numbers depend on the machine and its load.  The
@@ -40,8 +42,10 @@ if str(HERE) not in sys.path:
 
 import bench_arc_length  # noqa: E402
 import bench_beta_constraints  # noqa: E402
+import bench_continuity  # noqa: E402
 import bench_evaluation  # noqa: E402
 import bench_import  # noqa: E402
+import bench_large_curve  # noqa: E402
 import bench_notebooks  # noqa: E402
 import bench_outlines  # noqa: E402
 import bench_widgets  # noqa: E402
@@ -61,6 +65,8 @@ ITEMS = {
     "beta_constraints": bench_beta_constraints.run,
     "widgets": bench_widgets.run,
     "import": bench_import.run,
+    "continuity": bench_continuity.run,
+    "large_curve": bench_large_curve.run,
     "outlines": bench_outlines.run,
 }
 
@@ -101,11 +107,7 @@ def report(
         "",
         "Times are medians over repeats; *ratio* = course_lib time / reference time "
         "(below 1: course_lib is faster). Clock: "
-        + (
-            "process CPU time for items 1-4 (`--cpu`), wall time for 5-6."
-            if cpu
-            else "wall time."
-        ),
+        + ("process CPU time for items 1-4 (`--cpu`), wall time for 5-6." if cpu else "wall time."),
         "",
         render_table(results),
         "",
@@ -120,7 +122,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--quick", action="store_true", help="small sizes, no notebooks (< 20 s)")
     parser.add_argument("--skip-notebooks", action="store_true", help="do not run nbval")
     parser.add_argument(
-        "--cpu", action="store_true",
+        "--cpu",
+        action="store_true",
         help="time in-process work with process CPU time instead of wall time (items 1-4; "
         "for a machine shared with other jobs). Imports and notebooks stay wall time.",
     )
@@ -128,7 +131,9 @@ def main(argv: list[str] | None = None) -> int:
         "--only", nargs="+", choices=[*ITEMS, "notebooks"], help="run only these items"
     )
     parser.add_argument(
-        "--output", type=Path, default=None,
+        "--output",
+        type=Path,
+        default=None,
         help="markdown file to write (default: benchmarks/results.md; the quick mode only "
         "prints, unless --output is given)",
     )

@@ -16,12 +16,68 @@ import numpy as np
 __all__ = [
     "as_parameter_array",
     "as_points",
+    "as_real_array",
     "check_finite_scalar",
     "check_integer",
     "check_knots",
     "check_positive",
     "check_shape_parameters",
+    "scaled_norm",
 ]
+
+
+def scaled_norm(x: np.ndarray, axis: int = -1) -> np.ndarray:
+    """Euclidean norm along ``axis`` without overflow or underflow over the whole float
+    range: where the plain formula overflows or loses precision to underflow (norms
+    outside ``[1e-140, 1e150]``), the vectors are scaled by a power of two (exact) before
+    squaring."""
+    x = np.asarray(x, dtype=float)
+    y = x if axis in (-1, x.ndim - 1) else np.moveaxis(x, axis, -1)
+    with np.errstate(over="ignore", under="ignore"):
+        v = np.sqrt(np.einsum("...i,...i->...", y, y))
+    if v.size and 1e-140 < v.min() and v.max() < 1e150:
+        return v
+    big = np.max(np.abs(x), axis=axis, keepdims=True)
+    _, e = np.frexp(np.where(big > 0, big, 1.0))
+    y = np.ldexp(x, -e)
+    return np.ldexp(np.sqrt(np.sum(y * y, axis=axis)), np.squeeze(e, axis=axis))
+
+
+def as_real_array(value: object, name: str, what: str = "an array of real numbers") -> np.ndarray:
+    """Return ``value`` as a float array, or raise a TypeError naming ``name``.
+
+    The one conversion every public function uses, so that bad input is refused the same
+    way everywhere: strings (bare or inside lists, even numeric ones like ``"1.0"``),
+    complex numbers (never silently dropping the imaginary part), ``None``, and ragged
+    nested lists all raise ``TypeError(f"{name} must be {what} ...")``.
+    """
+    if isinstance(value, (str, bytes)) or value is None:
+        raise TypeError(f"{name} must be {what}, got {type(value).__name__}")
+    if isinstance(value, np.ndarray):
+        arr = value
+    else:
+        try:
+            arr = np.asarray(value)
+        except (TypeError, ValueError):
+            raise TypeError(
+                f"{name} must be {what}: a rectangular array (got a ragged nested sequence, "
+                "rows of different lengths)"
+            ) from None
+    kind = arr.dtype.kind
+    if kind == "c":
+        raise TypeError(f"{name} must be {what}, got complex numbers")
+    if kind in "USV":
+        raise TypeError(f"{name} must be {what}, got strings (pass numbers, not text)")
+    if kind == "O":
+        for x in arr.ravel():
+            if isinstance(x, (str, bytes, complex, np.complexfloating)) or x is None:
+                raise TypeError(f"{name} must be {what}, got an element {x!r}")
+    if kind in "biuf":
+        return arr.astype(float, copy=False)
+    try:
+        return arr.astype(float)
+    except (TypeError, ValueError) as exc:
+        raise TypeError(f"{name} must be {what} ({exc})") from None
 
 
 def as_points(
@@ -43,10 +99,7 @@ def as_points(
     """
     if isinstance(value, (str, bytes)) or value is None:
         raise TypeError(f"{name} must be an array of points, got {type(value).__name__}")
-    try:
-        arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError) as exc:
-        raise TypeError(f"{name} must be an array of real numbers ({exc})") from None
+    arr = as_real_array(value, name, "an array of points (real numbers)")
     if arr.ndim != 2:
         raise ValueError(
             f"{name} must have shape (n_points, dim), one point per row; got shape {arr.shape}"
@@ -76,14 +129,7 @@ def as_parameter_array(value: object, name: str) -> tuple[np.ndarray, bool]:
     ValueError
         If it is more than one-dimensional or not finite.
     """
-    if isinstance(value, (str, bytes)) or value is None:
-        raise TypeError(
-            f"{name} must be a real number or an array of them, got {type(value).__name__}"
-        )
-    try:
-        arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError) as exc:
-        raise TypeError(f"{name} must be a real number or an array of them ({exc})") from None
+    arr = as_real_array(value, name, "a real number or an array of them")
     scalar = arr.ndim == 0
     if arr.ndim > 1:
         raise ValueError(f"{name} must be a scalar or a 1-d array; got shape {arr.shape}")

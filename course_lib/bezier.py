@@ -117,8 +117,12 @@ def derivative_control_points(control_points: np.ndarray, k: int = 1) -> np.ndar
     Returns
     -------
     ndarray of shape (d - k + 1, dim), or (1, dim) of zeros if ``k > d``.
+
+    Degree 0 (one control point, a constant curve) is allowed everywhere in this module:
+    it evaluates to its point, its derivatives are zero, and it elevates to a polygon of
+    repeated points.
     """
-    P = as_points(control_points, "control_points")
+    P = as_points(control_points, "control_points", min_points=1)
     k = check_integer(k, "k", minimum=0)
     return _derivative_points(P, k)
 
@@ -144,7 +148,7 @@ def evaluate(control_points: np.ndarray, u: float | np.ndarray, n: int = 0) -> n
     -------
     ndarray of shape (dim,) or (m, dim)
     """
-    P = as_points(control_points, "control_points")
+    P = as_points(control_points, "control_points", min_points=1)
     n = check_integer(n, "n", minimum=0)
     uu, scalar = as_parameter_array(u, "u")
     out = _evaluate(P, uu, n)
@@ -163,7 +167,7 @@ def end_derivatives(control_points: np.ndarray, n: int, end: int = 1) -> np.ndar
     ndarray of shape (n + 1, dim)
         Row ``k`` is the k-th derivative (zero for ``k > d``).
     """
-    P = as_points(control_points, "control_points")
+    P = as_points(control_points, "control_points", min_points=1)
     n = check_integer(n, "n", minimum=0)
     if end not in (0, 1):
         raise ValueError(f"end must be 0 (start, u = 0) or 1 (end, u = 1); got {end!r}")
@@ -191,7 +195,7 @@ def elevate_degree(control_points: np.ndarray, times: int = 1) -> np.ndarray:
     -------
     ndarray of shape (d + 1 + times, dim)
     """
-    P = as_points(control_points, "control_points")
+    P = as_points(control_points, "control_points", min_points=1)
     times = check_integer(times, "times", minimum=0)
     for _ in range(times):
         d = P.shape[0] - 1
@@ -213,7 +217,7 @@ def de_casteljau(control_points: np.ndarray, u: float) -> list[np.ndarray]:
         ``levels[r]`` has shape ``(d + 1 - r, dim)``; ``levels[0]`` is the control
         polygon and ``levels[d][0]`` is the point ``q(u)``.
     """
-    P = as_points(control_points, "control_points")
+    P = as_points(control_points, "control_points", min_points=1)
     u = check_finite_scalar(u, "u")
     levels = [P]
     while levels[-1].shape[0] > 1:

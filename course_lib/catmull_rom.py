@@ -33,7 +33,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import as_parameter_array, as_points, check_shape_parameters
+from ._validation import (
+    as_parameter_array,
+    as_points,
+    as_real_array,
+    check_shape_parameters,
+    scaled_norm,
+)
 from .curve import PiecewiseBezier
 
 __all__ = ["catmull_rom", "catmull_rom_blending"]
@@ -86,7 +92,7 @@ def catmull_rom_blending(
 
 def _vertex_betas(beta1: object, n_vertices: int, n_joints: int) -> np.ndarray:
     """β1 at the interpolated vertices V_1 .. V_{m-1}: scalar, one per vertex, or per joint."""
-    arr = np.asarray(beta1, dtype=float) if not isinstance(beta1, (str, bytes)) else None
+    arr = as_real_array(beta1, "beta1", "a real number or an array of them")
     if arr is not None and arr.ndim == 1 and arr.size == n_joints and n_joints != n_vertices:
         b = check_shape_parameters(beta1, "beta1", n_joints, positive=True)
         return np.concatenate([[1.0], b, [1.0]])
@@ -126,7 +132,8 @@ def catmull_rom(V: np.ndarray, beta1: float | np.ndarray = 1.0) -> PiecewiseBezi
     Raises
     ------
     ValueError
-        Fewer than 4 control points; β1 <= 0 or wrong length (naming the joint);
+        Fewer than 4 control points; β1 <= 0 or wrong length (naming the joint); β1 so
+        large or small that the tangents overflow (never an inf in the result);
         a vanishing tangent ``D_j^+ = 0`` at an interpolated vertex (e.g. coincident
         consecutive control points), naming the vertex.
     """
@@ -134,9 +141,20 @@ def catmull_rom(V: np.ndarray, beta1: float | np.ndarray = 1.0) -> PiecewiseBezi
     m = P.shape[0] - 1
     b = _vertex_betas(beta1, m - 1, m - 3)  # at V_1 .. V_{m-1}
     prev, here, nxt = P[:-2], P[1:-1], P[2:]
-    Dp = ((nxt - here) + (b**2)[:, None] * (here - prev)) / (1 + b)[:, None]
-    scale = max(float(np.max(np.abs(P))), 1.0)
-    bad = np.linalg.norm(Dp, axis=1) <= 1e-12 * scale
+    w = 1.0 / (1.0 + b)  # D+ = (V_{j+1} - V_j)/(1 + β1) + β1/(1 + β1) β1 (V_j - V_{j-1}):
+    with np.errstate(over="ignore", invalid="ignore"):  # no β1² (it overflows first)
+        Dp = w[:, None] * (nxt - here) + (b * w)[:, None] * (b[:, None] * (here - prev))
+        Dm = Dp / b[:, None]
+    huge = ~np.all(np.isfinite(Dp) & np.isfinite(Dm), axis=1)
+    if np.any(huge):
+        j = int(np.argmax(huge)) + 1
+        raise ValueError(
+            f"beta1 = {b[j - 1]} at V_{j} makes the curve leave the float range: the tangents "
+            f"D+ ~ beta1 |V_{j} - V_{j - 1}| and D- = D+ / beta1 overflow (the Catmull-Rom "
+            "curve has no finite limit as beta1 -> 0 or infinity); choose a moderate beta1"
+        )
+    scale = float(np.max(np.abs(P)))
+    bad = scaled_norm(Dp, axis=1) <= 1e-12 * scale
     if np.any(bad):
         j = int(np.argmax(bad)) + 1
         raise ValueError(
@@ -144,7 +162,6 @@ def catmull_rom(V: np.ndarray, beta1: float | np.ndarray = 1.0) -> PiecewiseBezi
             f"{b[j - 1]} give D = 0, e.g. coincident consecutive control points): the curve "
             f"would not be regular at V_{j}"
         )
-    Dm = Dp / b[:, None]
     segs = np.empty((m - 2, 4, P.shape[1]))
     segs[:, 0] = P[1:-2]
     segs[:, 1] = P[1:-2] + Dp[:-1] / 3

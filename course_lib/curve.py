@@ -21,15 +21,17 @@ Lesson: ``notebooks/01_reparametrization.ipynb`` (piecewise curves and joints),
 
 from __future__ import annotations
 
+import warnings
 from bisect import bisect_right
 from collections.abc import Mapping, Sequence
 from functools import lru_cache
+from itertools import pairwise
 from math import comb, factorial
 from types import MappingProxyType
 
 import numpy as np
 
-from ._validation import as_parameter_array, as_points, check_integer, check_knots
+from ._validation import as_parameter_array, as_points, as_real_array, check_integer, check_knots
 from .bezier import _bernstein, _derivative_points, _end_derivatives
 
 __all__ = ["PiecewiseBezier"]
@@ -37,6 +39,10 @@ __all__ = ["PiecewiseBezier"]
 # Hodographs of degree up to this are evaluated from the two-sided Taylor form
 # (PiecewiseBezier._taylor); above it, from the Bernstein form (stable for any degree).
 _TAYLOR_MAX_DEGREE = 8
+# Curves with at least this many segments, evaluated at fewer than 4 parameters per
+# segment before any table exists, are evaluated from the Bernstein form of the located
+# segments only (building the O(segments) Taylor table would cost more than it saves).
+_LAZY_MIN_SEGMENTS = 4096
 # Parameters are evaluated in chunks of this many so the temporaries stay in cache.
 _CHUNK = 1 << 15
 
@@ -88,6 +94,34 @@ def _taylor_matrix(d: int, n: int) -> np.ndarray:
     return M
 
 
+def _uniform_array(segments: object) -> np.ndarray | None:
+    """``segments`` as one validated float array (S, d + 1, dim) when it is one (an
+    ndarray or a sequence of equally shaped polygons), else None (then each segment is
+    validated on its own, which names the offending one)."""
+    if isinstance(segments, (str, bytes)) or segments is None:
+        return None
+    if not isinstance(segments, np.ndarray):
+        try:
+            first = segments[0]  # type: ignore[index]
+            if not isinstance(first, np.ndarray):
+                return None  # nested Python lists: the per-segment path is fast enough
+        except (TypeError, IndexError, KeyError):
+            return None
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            arr = np.asarray(segments)
+    except (TypeError, ValueError, Warning):
+        return None
+    if arr.ndim != 3 or arr.dtype.kind not in "biuf" or arr.shape[0] == 0:
+        return None
+    if arr.shape[1] < 2 or arr.shape[2] not in (2, 3) or not np.isfinite(arr).all():
+        return None  # let the per-segment checks name the segment and the rule
+    out = arr.astype(float)  # always a copy: the curve owns its data
+    out.setflags(write=False)
+    return out
+
+
 def _readonly(a: np.ndarray) -> np.ndarray:
     a = np.array(a, dtype=float)
     a.setflags(write=False)
@@ -130,7 +164,7 @@ class PiecewiseBezier:
     array([2., 0.])
     """
 
-    __slots__ = ("_cache", "_info", "_knots", "_segments", "has_knots")
+    __slots__ = ("_array", "_cache", "_degrees", "_info", "_knots", "_segments", "has_knots")
 
     def __init__(
         self,
@@ -144,6 +178,16 @@ class PiecewiseBezier:
                 "segments must be a sequence of control polygons; to build a curve from one "
                 "polygon use PiecewiseBezier([points]) or PiecewiseBezier.from_control_points"
             )
+        arr = _uniform_array(segments)
+        if arr is not None:  # one degree: validated and stored as one (S, d + 1, dim) array
+            has_knots = knots is not None
+            k = (
+                check_knots(knots, "knots", count=arr.shape[0] + 1)
+                if has_knots
+                else np.arange(arr.shape[0] + 1, dtype=float)
+            )
+            self._init_array(arr, k, has_knots, info)
+            return
         try:
             seg_list = list(segments)
         except TypeError:
@@ -169,7 +213,24 @@ class PiecewiseBezier:
         self._init(segs, k, has_knots, info)
 
     def _init(self, segs, knots, has_knots, info) -> None:
+        shapes = {s.shape for s in segs}
+        if len(shapes) == 1 and len(segs) > 1:
+            self._init_array(np.stack(segs), knots, has_knots, info)
+            return
         self._segments = tuple(_readonly(s) for s in segs)
+        self._array = None
+        self._degrees = tuple(s.shape[0] - 1 for s in self._segments)
+        self._knots = _readonly(knots)
+        self.has_knots = bool(has_knots)
+        self._info = MappingProxyType(dict(info or {}))
+        self._cache: dict = {}
+
+    def _init_array(self, arr, knots, has_knots, info) -> None:
+        """Uniform degree: the segments are one read-only (S, d + 1, dim) array (no
+        per-segment copies; the evaluation tables are built from it in one product)."""
+        self._array = arr if not arr.flags.writeable and arr.dtype == float else _readonly(arr)
+        self._segments = None  # views, made on first access of ``segments``
+        self._degrees = (arr.shape[1] - 1,) * arr.shape[0]
         self._knots = _readonly(knots)
         self.has_knots = bool(has_knots)
         self._info = MappingProxyType(dict(info or {}))
@@ -181,7 +242,12 @@ class PiecewiseBezier:
         obj = cls.__new__(cls)
         has = knots is not None
         k = np.asarray(knots, float) if has else np.arange(len(segments) + 1, dtype=float)
-        obj._init([np.asarray(s, float) for s in segments], k, has, info)
+        if isinstance(segments, np.ndarray) and segments.ndim == 3:
+            arr = np.array(segments, dtype=float)
+            arr.setflags(write=False)
+            obj._init_array(arr, k, has, info)
+        else:
+            obj._init([np.asarray(s, float) for s in segments], k, has, info)
         return obj
 
     @classmethod
@@ -215,6 +281,8 @@ class PiecewiseBezier:
     @property
     def segments(self) -> tuple[np.ndarray, ...]:
         """Control polygons, one read-only ``(d_i + 1, dim)`` array per segment."""
+        if self._segments is None:
+            self._segments = tuple(self._array)
         return self._segments
 
     @property
@@ -229,20 +297,20 @@ class PiecewiseBezier:
 
     @property
     def n_segments(self) -> int:
-        return len(self._segments)
+        return self._knots.size - 1
 
     @property
     def n_joints(self) -> int:
         """Number of interior joints (``n_segments - 1``)."""
-        return len(self._segments) - 1
+        return self._knots.size - 2
 
     @property
     def degrees(self) -> tuple[int, ...]:
-        return tuple(s.shape[0] - 1 for s in self._segments)
+        return self._degrees
 
     @property
     def dim(self) -> int:
-        return self._segments[0].shape[1]
+        return self._array.shape[2] if self._array is not None else self._segments[0].shape[1]
 
     @property
     def domain(self) -> tuple[float, float]:
@@ -254,6 +322,8 @@ class PiecewiseBezier:
         """End points ``q_i(1)`` of segments ``0 .. S-2``: the joints, shape ``(S-1, dim)``."""
         if self.n_joints == 0:
             return np.zeros((0, self.dim))
+        if self._array is not None:
+            return self._array[:-1, -1].copy()
         return np.array([s[-1] for s in self._segments[:-1]])
 
     @property
@@ -267,8 +337,9 @@ class PiecewiseBezier:
 
         Where consecutive segments do not share their joint point, both are listed.
         """
-        rows = [self._segments[0]]
-        for prev, s in zip(self._segments[:-1], self._segments[1:], strict=True):
+        segs = self.segments
+        rows = [segs[0]]
+        for prev, s in pairwise(segs):
             rows.append(s[1:] if np.array_equal(prev[-1], s[0]) else s)
         return np.vstack(rows)
 
@@ -307,7 +378,7 @@ class PiecewiseBezier:
         i = self._check_segment(i)
         n = check_integer(n, "n", minimum=0)
         uu, scalar = as_parameter_array(u, "u")
-        Q = _derivative_points(self._segments[i], n)
+        Q = _derivative_points(self.segments[i], n)
         out = _bernstein(Q.shape[0] - 1, uu) @ Q
         return out[0] if scalar else out
 
@@ -323,12 +394,17 @@ class PiecewiseBezier:
         n = check_integer(n, "n", minimum=0)
         if end not in (0, 1):
             raise ValueError(f"end must be 0 (u = 0) or 1 (u = 1); got {end!r}")
-        return _end_derivatives(self._segments[i], n, end)
+        return _end_derivatives(self.segments[i], n, end)
 
     def _stacks(self, n: int):
         """Per degree: (segment -> row map, stacked n-th hodograph points)."""
         key = ("stack", n)
         if key not in self._cache:
+            if self._array is not None:
+                S = self.n_segments
+                stack = _derivative_points(self._array, n)
+                self._cache[key] = [(self._degrees[0], np.arange(S), np.arange(S), stack)]
+                return self._cache[key]
             groups: dict[int, list[int]] = {}
             for i, d in enumerate(self.degrees):
                 groups.setdefault(d, []).append(i)
@@ -401,7 +477,12 @@ class PiecewiseBezier:
         """
         n = check_integer(n, "n", minimum=0)
         tt, scalar = as_parameter_array(t, "t")
-        table = self._taylor(n)
+        few = (
+            self.n_segments >= _LAZY_MIN_SEGMENTS
+            and tt.size < 4 * self.n_segments
+            and ("taylor", n) not in self._cache
+        )
+        table = None if few else self._taylor(n)
         if table is None:
             idx, u = self._locate(tt)
             out = self._eval_located(idx, u, n)
@@ -441,7 +522,7 @@ class PiecewiseBezier:
         """
         key = ("taylor", n)
         if key not in self._cache:
-            top = max(0, max(self.degrees) - n)
+            top = max(0, (self._degrees[0] if self._array is not None else max(self._degrees)) - n)
             self._cache[key] = None if top > _TAYLOR_MAX_DEGREE else self._taylor_table(n, top)
         return self._cache[key]
 
@@ -450,6 +531,22 @@ class PiecewiseBezier:
         (curves are rebuilt on every slider move, so this must be cheap too)."""
         h = np.diff(self._knots)
         scale = h ** -float(n) if n else np.ones_like(h)
+        if self._array is not None:
+            d = self._degrees[0]
+            e = d - n
+            table = np.empty((top + 1, 2 * self.n_segments, self.dim))
+            if e < 0:
+                table[:] = 0.0
+            else:
+                S, dim = self.n_segments, self.dim
+                A = self._array.transpose(1, 0, 2).reshape(d + 1, S * dim)
+                C = (_taylor_matrix(d, n) @ A).reshape(2 * (e + 1), S, dim)  # one GEMM
+                if n:
+                    C *= scale[None, :, None]
+                table[: e + 1, 0::2] = C[: e + 1]
+                table[: e + 1, 1::2] = C[e + 1 :]
+            table.setflags(write=False)
+            return table
         table = np.zeros((top + 1, 2 * self.n_segments, self.dim))
         groups: dict[int, list[int]] = {}
         for i, d in enumerate(self.degrees):
@@ -549,22 +646,31 @@ class PiecewiseBezier:
     # -------------------------------------------------------------- new curves
     def with_knots(self, knots: Sequence[float] | np.ndarray) -> PiecewiseBezier:
         """The same segments with a new knot sequence (a new global parametrization)."""
-        return PiecewiseBezier(self._segments, knots, info=self._info)
+        src = self._array if self._array is not None else self._segments
+        return PiecewiseBezier(src, knots, info=self._info)
 
     def transformed(self, matrix: np.ndarray, offset: np.ndarray | None = None) -> PiecewiseBezier:
         """The affine image ``x -> matrix @ x + offset`` (control points mapped the same way).
 
         Bézier curves are affinely invariant, so this is the exact image curve.
         """
-        A = np.asarray(matrix, dtype=float)
+        A = as_real_array(matrix, "matrix", f"a real ({self.dim}, {self.dim}) array")
         if A.shape != (self.dim, self.dim) or not np.all(np.isfinite(A)):
             raise ValueError(
                 f"matrix must be a finite ({self.dim}, {self.dim}) array; got shape {A.shape}"
             )
-        b = np.zeros(self.dim) if offset is None else np.asarray(offset, dtype=float)
+        b = (
+            np.zeros(self.dim)
+            if offset is None
+            else as_real_array(offset, "offset", "a real vector")
+        )
         if b.shape != (self.dim,) or not np.all(np.isfinite(b)):
             raise ValueError(
                 f"offset must be a finite vector of length {self.dim}; got shape {b.shape}"
+            )
+        if self._array is not None:
+            return PiecewiseBezier._fast(
+                self._array @ A.T + b, self._knots if self.has_knots else None, self._info
             )
         segs = [s @ A.T + b for s in self._segments]
         return PiecewiseBezier._fast(segs, self._knots if self.has_knots else None, self._info)
@@ -572,4 +678,4 @@ class PiecewiseBezier:
     def segment_curve(self, i: int) -> PiecewiseBezier:
         """Segment ``i`` alone, as a one-segment curve."""
         i = self._check_segment(i)
-        return PiecewiseBezier._fast([self._segments[i]])
+        return PiecewiseBezier._fast([self.segments[i]])

@@ -31,12 +31,14 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ._bell import bell_table, compose_derivatives
+from ._bell import bell_row, check_chain_rule_order
 from ._validation import (
     as_parameter_array,
+    as_real_array,
     check_finite_scalar,
     check_integer,
     check_positive,
+    scaled_norm,
 )
 from .parametrization import as_parametrization, check_in_domain
 
@@ -86,7 +88,7 @@ def _typical_speed(curve) -> float:
     a, b = curve.domain
     segments = getattr(curve, "segments", None)
     pts = np.vstack(segments) if segments is not None else curve.evaluate(np.linspace(a, b, 17))
-    diag = float(np.linalg.norm(pts.max(axis=0) - pts.min(axis=0)))
+    diag = float(scaled_norm(pts.max(axis=0) - pts.min(axis=0)))
     return diag / (b - a) if diag > 0 else 1.0
 
 
@@ -101,7 +103,7 @@ def check_regular(curve, t: np.ndarray, d1: np.ndarray) -> np.ndarray:
         ``t`` has the leading shape of ``d1`` (or is a callable returning it, called only
         to name the place in the message).
     """
-    v = np.sqrt(np.einsum("...d,...d->...", d1, d1))
+    v = scaled_norm(d1, axis=-1)
     bad = v <= REGULARITY_RTOL * _typical_speed(curve)
     if np.any(bad):
         i = np.unravel_index(int(np.argmax(bad)), bad.shape)
@@ -148,7 +150,7 @@ def _gl(curve, a: np.ndarray, b: np.ndarray, order: int = 20) -> np.ndarray:
     x, w = _gauss_legendre(order)
     half = 0.5 * (b - a)
     nodes = (0.5 * (a + b))[:, None] + half[:, None] * x[None, :]
-    v = np.linalg.norm(curve.evaluate(nodes.ravel(), 1), axis=-1).reshape(nodes.shape)
+    v = scaled_norm(curve.evaluate(nodes.ravel(), 1), axis=-1).reshape(nodes.shape)
     return half * (v @ w)
 
 
@@ -198,7 +200,7 @@ def speed(curve, t: float | np.ndarray) -> float | np.ndarray:
     """Speed ``|c'(t)|`` (seed 004 §19.2: ``ds/dt``).  Zero is allowed here."""
     curve = as_parametrization(curve)
     tt, scalar = _params(curve, t)
-    v = np.linalg.norm(curve.evaluate(tt, 1), axis=-1)
+    v = scaled_norm(curve.evaluate(tt, 1), axis=-1)
     return float(v[0]) if scalar else v
 
 
@@ -380,6 +382,10 @@ def parameter_at_arc_length(curve, s: float | np.ndarray) -> float | np.ndarray:
     grid = np.append((bp[:-1, None] + np.diff(bp)[:, None] * frac).ravel(), bp[-1])
     S = np.concatenate([[0.0], np.cumsum(_integrate_speed(curve, grid[:-1], grid[1:]))])
     L = S[-1]
+    if not np.isfinite(L):
+        raise ValueError(
+            f"the arc length of the curve overflows the float range (L = {L}); rescale the curve"
+        )
     tol = 1e-12 * max(L, 1e-300)
     if ss.min() < -tol or ss.max() > L + tol:
         bad = ss[(ss < -tol) | (ss > L + tol)][0]
@@ -393,11 +399,11 @@ def parameter_at_arc_length(curve, s: float | np.ndarray) -> float | np.ndarray:
     base = grid[i]
     for _ in range(60):
         F = s_lo + _gl(curve, base, t) - ss
-        if np.all(np.abs(F) <= 1e-15 * max(L, 1.0) + 4e-16 * np.abs(ss)):
+        if np.all(np.abs(F) <= 1e-15 * L + 4e-16 * np.abs(ss)):  # relative: scale-free
             break
         lo = np.where(F < 0, t, lo)
         hi = np.where(F > 0, t, hi)
-        v = np.linalg.norm(curve.evaluate(t, 1), axis=-1)
+        v = scaled_norm(curve.evaluate(t, 1), axis=-1)
         with np.errstate(divide="ignore", invalid="ignore"):
             newton = t - F / v
         inside = (v > 0) & (newton > lo) & (newton < hi)
@@ -429,7 +435,7 @@ def arc_length_derivatives(curve, t: float | np.ndarray, n: int) -> np.ndarray:
         Row ``k - 1`` is ``d^k c/ds^k``.
     """
     curve = as_parametrization(curve)
-    n = check_integer(n, "n", minimum=1)
+    n = check_chain_rule_order(check_integer(n, "n", minimum=1), "n")
     tt, scalar = _params(curve, t)
     d = np.stack([curve.evaluate(tt, k) for k in range(n + 1)])  # (n+1, m, dim)
     v = check_regular(curve, tt, d[1])
@@ -437,30 +443,62 @@ def arc_length_derivatives(curve, t: float | np.ndarray, n: int) -> np.ndarray:
     return out[:, 0] if scalar else out
 
 
+@lru_cache(maxsize=64)
+def _leibniz_matrix(n: int) -> np.ndarray:
+    """(n, n*n): row j holds C(j, i) at column i*n + (j - i) (Leibniz's rule for a product)."""
+    from math import comb
+
+    L = np.zeros((n, n * n))
+    for j in range(n):
+        for i in range(j + 1):
+            L[j, i * n + (j - i)] = comb(j, i)
+    L.setflags(write=False)
+    return L
+
+
 def _arc_length_derivatives_from(d: np.ndarray, v: np.ndarray, n: int) -> np.ndarray:
-    """``d[k]`` = k-th parametric derivative (shape (n+1, m, dim)), ``v = |d[1]|``."""
+    """``d[k]`` = k-th parametric derivative (shape (n+1, m, dim)), ``v = |d[1]|``.
+
+    Computed for the curve scaled by a power of two near ``1/v`` (exact), then scaled back
+    (``d^k c/ds^k`` is homogeneous of degree ``1 - k``): no intermediate over/underflow."""
+    _, e = np.frexp(v)
+    d = np.ldexp(d[: n + 1], -e[None, :, None])
+    A = _arc_length_derivatives_unit(d, np.ldexp(v, -e), n)
+    k = np.arange(1, n + 1)[:, None, None]
+    return np.ldexp(A, (1 - k) * e[None, :, None])
+
+
+def _arc_length_derivatives_unit(d: np.ndarray, v: np.ndarray, n: int) -> np.ndarray:
     from math import comb
 
     m = d.shape[1]
-    # g = c'.c' and its derivatives g^(j), j = 0..n-1
-    g = np.zeros((n, m))
-    for j in range(n):
-        g[j] = sum(comb(j, i) * np.sum(d[i + 1] * d[j - i + 1], axis=-1) for i in range(j + 1))
-    # s^(j) = (sqrt o g)^(j-1), j = 1..n
+    # g = c'.c' and its derivatives g^(j) = sum_i C(j, i) c^(i+1).c^(j-i+1), j = 0..n-1
+    G = np.einsum("imd,kmd->ikm", d[1 : n + 1], d[1 : n + 1]).reshape(n * n, m)
+    g = _leibniz_matrix(n) @ G
+    # s^(j), j = 1..n, from s'^2 = g (Leibniz): 2 s' s^(j+1) = g^(j) - sum_{i=1}^{j-1}
+    # C(j, i) s^(i+1) s^(j-i+1) -- no Bell table needed
     sd = np.zeros((n + 1, m))
     sd[1] = v
-    if n >= 2:
-        coef = np.cumprod([0.5 - i for i in range(n - 1)])  # h^(k)(x) = coef[k-1] x^(1/2-k)
-        outer = np.stack([coef[k - 1] * g[0] ** (0.5 - k) for k in range(1, n)])
-        sd[2:] = compose_derivatives(outer, g[1:n])
-    # t^(j)(s), j = 1..n, from s(t(s)) = s
+    for j in range(1, n):
+        acc = g[j]
+        for i in range(1, j):
+            acc = acc - comb(j, i) * sd[i + 1] * sd[j - i + 1]
+        sd[j + 1] = acc / (2.0 * v)
+    # t^(j)(s), j = 1..n, from s(t(s)) = s; B is the Bell table of t', t'', ... built row by
+    # row, and at the end it composes c(t(s)) (Faà di Bruno)
     td = np.zeros((n, m))
     td[0] = 1.0 / v
+    B = np.zeros((n + 1, n + 1, m))
+    B[0, 0] = 1.0
+    B[1, 1] = td[0]
     for j in range(2, n + 1):
-        B = bell_table(td, j)
-        acc = sum(sd[k] * B[j, k] for k in range(2, j + 1))
+        bell_row(B, td, j)
+        acc = sd[2] * B[j, 2]
+        for k in range(3, j + 1):
+            acc = acc + sd[k] * B[j, k]
         td[j - 1] = -acc / v
-    return compose_derivatives(d[1:], td)
+        B[j, 1] = td[j - 1]
+    return np.einsum("ikm,kmd->imd", B[1:, 1:], d[1 : n + 1])
 
 
 # -------------------------------------------------------- fundamental theorem
@@ -530,13 +568,13 @@ def curve_from_curvature(
     f = _as_curvature_function(kappa)
     length = check_positive(length, "length")
     num = check_integer(num, "num", minimum=2)
-    p0 = np.asarray(start_point, dtype=float)
+    p0 = as_real_array(start_point, "start_point", "a real 2-d point")
     if p0.shape != (2,) or not np.all(np.isfinite(p0)):
         raise ValueError(f"start_point must be a finite 2-d point; got {start_point!r}")
     if start_angle is not None and start_tangent is not None:
         raise ValueError("give start_angle or start_tangent, not both")
     if start_tangent is not None:
-        v = np.asarray(start_tangent, dtype=float)
+        v = as_real_array(start_tangent, "start_tangent", "a real 2-d vector")
         if v.shape != (2,) or not np.all(np.isfinite(v)) or np.hypot(*v) == 0:
             raise ValueError(
                 f"start_tangent must be a finite nonzero 2-d vector; got {start_tangent!r}"

@@ -29,8 +29,8 @@ from math import factorial
 
 import numpy as np
 
-from ._bell import compose_derivatives
-from ._validation import as_parameter_array, check_finite_scalar, check_integer
+from ._bell import check_chain_rule_order, compose_derivatives
+from ._validation import as_parameter_array, as_real_array, check_finite_scalar, check_integer
 from .parametrization import _check_domain, as_parametrization, check_in_domain
 
 __all__ = [
@@ -162,7 +162,7 @@ class ChangeOfVariables:
         if isinstance(coefficients, np.polynomial.Polynomial):
             P = coefficients.convert(kind=np.polynomial.Polynomial, domain=[-1, 1], window=[-1, 1])
         else:
-            c = np.asarray(coefficients, dtype=float)
+            c = as_real_array(coefficients, "coefficients", "a sequence of real numbers")
             if c.ndim != 1 or c.size < 2 or not np.all(np.isfinite(c)):
                 raise ValueError(
                     "coefficients must be a finite 1-d sequence (c_0, c_1, ...) of length >= 2"
@@ -240,7 +240,7 @@ class ChangeOfVariables:
         ValueError
             If ``β_1 <= 0``.
         """
-        b = np.asarray(betas, dtype=float)
+        b = as_real_array(betas, "betas", "a sequence of real numbers")
         if b.ndim != 1 or b.size == 0 or not np.all(np.isfinite(b)):
             raise ValueError("betas must be a finite 1-d sequence (β_1, ..., β_n)")
         if b[0] <= 0:
@@ -361,7 +361,7 @@ class Reparametrized:
 
     def evaluate(self, t: float | np.ndarray, n: int = 0) -> np.ndarray:
         """n-th derivative of ``Q(f(t))``; shape (dim,) or (m, dim)."""
-        n = check_integer(n, "n", minimum=0)
+        n = check_chain_rule_order(check_integer(n, "n", minimum=0), "n")
         tt, scalar = as_parameter_array(t, "t")
         tt = check_in_domain(tt, self.domain)
         x = np.clip(self.f._raw(tt, 0), *self.param.domain)
@@ -397,8 +397,10 @@ def faa_di_bruno(outer_derivs: np.ndarray, inner_derivs: np.ndarray) -> np.ndarr
     ndarray shaped like ``outer_derivs``
         Row ``i - 1`` is ``(g o f)^{(i)}(t)``.
     """
-    outer = np.asarray(outer_derivs, dtype=float)
-    inner = np.asarray(inner_derivs, dtype=float)
+    outer = as_real_array(outer_derivs, "outer_derivs", "an array of derivatives")
+    inner = as_real_array(inner_derivs, "inner_derivs", "an array of derivatives")
+    if outer.ndim == 0:
+        raise ValueError(f"outer_derivs must have shape (n, ...); got a scalar {outer}")
     if inner.ndim not in (1, 2) or inner.shape[0] == 0:
         raise ValueError(
             f"inner_derivs must have shape (n,) or (n, m) with n >= 1; got {inner.shape}"
@@ -410,6 +412,7 @@ def faa_di_bruno(outer_derivs: np.ndarray, inner_derivs: np.ndarray) -> np.ndarr
         )
     if not (np.all(np.isfinite(outer)) and np.all(np.isfinite(inner))):
         raise ValueError("outer_derivs and inner_derivs must be finite")
+    check_chain_rule_order(inner.shape[0], "the number n of derivatives (len(inner_derivs))")
     return compose_derivatives(outer, inner)
 
 

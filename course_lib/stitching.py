@@ -16,16 +16,28 @@ point ``T`` on the line ``V_{d-2} V_{d-1}``:
 is correct: expanding it gives eq. (11b) exactly (sympy proof:
 ``tests/unit/test_stitching.py::test_farin_boehm_factorizes_eq_11b_symbolically``).
 
+Any order: :func:`gn_stitch_points` fixes ``W_0 .. W_n`` from the Beta-constraints of
+orders ``0..n`` (seed 000 eq. (6)) with the Bézier end derivatives, one point per order:
+``W_i = (d-i)!/d! r^{(i)}(0) - sum_{j<i} (-1)^{i-j} C(i, j) W_j``; for ``n = 1, 2`` it is
+eq. (10) and (11a).
+
 Lesson: ``notebooks/04_beta_splines.ipynb``.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
-from ._validation import as_points, check_finite_scalar, check_integer, check_positive
+from ._validation import (
+    as_points,
+    as_real_array,
+    check_finite_scalar,
+    check_integer,
+    check_positive,
+)
 from .curve import PiecewiseBezier
 
 __all__ = [
@@ -36,6 +48,8 @@ __all__ = [
     "g1_stitch_points",
     "g2_stitch",
     "g2_stitch_points",
+    "gn_stitch",
+    "gn_stitch_points",
 ]
 
 
@@ -63,7 +77,7 @@ def g1_stitch_points(V: np.ndarray, beta1: float) -> np.ndarray:
     Parameters
     ----------
     V : array_like of shape (d + 1, dim)
-        Control polygon of the left curve ``q``, ``d >= 2``.
+        Control polygon of the left curve ``q``, ``d >= 1``.
     beta1 : float
         ``β1 > 0``.
 
@@ -71,7 +85,7 @@ def g1_stitch_points(V: np.ndarray, beta1: float) -> np.ndarray:
     -------
     ndarray of shape (2, dim)
     """
-    P = _polygon(V)
+    P = _polygon(V, min_points=2)  # eq. (9)-(10) use only V_(d-1), V_d: d = 1 works
     b1 = check_positive(beta1, "beta1")
     return np.array([P[-1], P[-1] + b1 * (P[-1] - P[-2])])
 
@@ -106,7 +120,7 @@ def _rest(W_rest: object, count: int, dim: int, what: str) -> np.ndarray:
                 f"W_rest must give the {count} free control point(s) of r left by {what}; got None"
             )
         return np.zeros((0, dim))
-    R = np.asarray(W_rest, dtype=float)
+    R = as_real_array(W_rest, "W_rest", "an array of points (real numbers)")
     if R.size == 0 and count == 0:
         return np.zeros((0, dim))
     R = as_points(W_rest, "W_rest", min_points=1)
@@ -124,18 +138,18 @@ def g1_stitch(V: np.ndarray, beta1: float, W_rest: np.ndarray) -> PiecewiseBezie
     Parameters
     ----------
     V : array_like of shape (d + 1, dim)
-        Control polygon of ``q``, ``d >= 2``.
+        Control polygon of ``q``, ``d >= 1`` (eq. (9)-(10) use only ``V_{d-1}, V_d``).
     beta1 : float
         ``β1 > 0``.
     W_rest : array_like of shape (d - 1, dim)
-        The free control points ``W_2 .. W_d`` of ``r``.
+        The free control points ``W_2 .. W_d`` of ``r`` (``None`` or empty for ``d = 1``).
 
     Returns
     -------
     PiecewiseBezier
         ``info``: ``beta1`` (one value), ``W01`` (the constructed ``W_0, W_1``).
     """
-    P = _polygon(V)
+    P = _polygon(V, min_points=2)
     W = g1_stitch_points(P, beta1)
     R = _rest(W_rest, P.shape[0] - 2, P.shape[1], "G1 fixed W_0, W_1")
     info = {"beta1": np.array([float(beta1)]), "W01": W}
@@ -197,14 +211,24 @@ def farin_boehm_gamma(beta1: float, beta2: float, d: int = 3, *, joint: int | No
 
 @dataclass(frozen=True)
 class FarinBoehm:
-    """Result of :func:`farin_boehm`: ``W`` = ``(W_0, W_1, W_2)``, the point ``T``, ``gamma``."""
+    """Result of :func:`farin_boehm`: ``W`` = ``(W_0, W_1, W_2)``, the point ``T``, ``gamma``.
+
+    Where γ is undefined (``β2 = -β1 (d-1)(1+β1)``) ``T`` is at infinity: ``gamma`` is
+    ``inf``, ``T`` is ``None`` and ``T_at_infinity`` is True (``W`` is still finite).
+    """
 
     W: np.ndarray
-    T: np.ndarray
+    T: np.ndarray | None
     gamma: float
 
+    @property
+    def T_at_infinity(self) -> bool:
+        return self.T is None
 
-def farin_boehm(V_last3: np.ndarray, beta1: float, beta2: float, d: int) -> FarinBoehm:
+
+def farin_boehm(
+    V_last3: np.ndarray, beta1: float, beta2: float, d: int, *, at_infinity: str = "raise"
+) -> FarinBoehm:
     """Farin-Boehm construction of ``W_0, W_1, W_2`` (seed 000 eq. (12.1)-(12.5)).
 
     Parameters
@@ -215,17 +239,24 @@ def farin_boehm(V_last3: np.ndarray, beta1: float, beta2: float, d: int) -> Fari
         Shape parameters, ``β1 > 0``.
     d : int
         Degree of both curves (``>= 2``).
+    at_infinity : {"raise", "report"}
+        Where γ is undefined (``β2 = -β1 (d-1)(1+β1)``), T is at infinity but ``W`` is
+        finite: ``"report"`` returns it with ``T = None``, ``gamma = inf``,
+        ``T_at_infinity = True``; ``"raise"`` (default, the historical behaviour that
+        the widgets rely on) raises the ValueError of :func:`farin_boehm_gamma`.
 
     Returns
     -------
     FarinBoehm
-        ``T = V_{d-1} + β1² γ (V_{d-1} - V_{d-2})``, ``W_2 = W_1 + (W_1 - T)/γ``.
+        ``T = V_{d-1} + β1² γ (V_{d-1} - V_{d-2})``, ``W_2 = W_1 + (W_1 - T)/γ``, computed
+        without the pole of γ as ``W_2 = W_1 + (W_1 - V_{d-1})/γ - β1² (V_{d-1} - V_{d-2})``
+        (the same point, eq. (11a)).  Where γ is undefined, ``T`` is at infinity: the
+        result has ``gamma = inf``, ``T = None``, ``T_at_infinity = True``.
 
     Raises
     ------
     ValueError
-        If ``β1 <= 0``, ``γ`` is undefined (see :func:`farin_boehm_gamma`), or
-        ``V_{d-1} = V_d``.
+        If ``β1 <= 0``, ``V_{d-1} = V_d``, or γ is undefined and ``at_infinity="raise"``.
     """
     P = as_points(V_last3, "V_last3", min_points=3)
     if P.shape[0] != 3:
@@ -234,9 +265,96 @@ def farin_boehm(V_last3: np.ndarray, beta1: float, beta2: float, d: int) -> Fari
         )
     _check_regular_end(P, "V_last3")
     b1 = check_positive(beta1, "beta1")
-    g = farin_boehm_gamma(b1, beta2, d)
+    b2 = check_finite_scalar(beta2, "beta2")
+    d = check_integer(d, "d", minimum=2)
+    den = b2 + b1 * (d - 1) * (1 + b1)
+    inv_g = den / ((d - 1) * (1 + b1))  # 1/γ, no pole
     W0 = P[2]
     W1 = W0 + b1 * (P[2] - P[1])
+    W2 = W1 + inv_g * (W1 - P[1]) - b1**2 * (P[1] - P[0])
+    if at_infinity not in ("raise", "report"):
+        raise ValueError(f"at_infinity must be 'raise' or 'report'; got {at_infinity!r}")
+    if abs(den) <= 1e-12 * max(1.0, abs(b2), b1 * (d - 1) * (1 + b1)):
+        if at_infinity == "raise":
+            farin_boehm_gamma(b1, b2, d)  # raises, naming beta2
+        return FarinBoehm(np.array([W0, W1, W2]), None, math.inf)
+    g = (d - 1) * (1 + b1) / den
     T = P[1] + b1**2 * g * (P[1] - P[0])
-    W2 = W1 + (W1 - T) / g
     return FarinBoehm(np.array([W0, W1, W2]), T, g)
+
+
+def gn_stitch_points(V: np.ndarray, betas: object) -> np.ndarray:
+    """``W_0 .. W_n`` that make ``r`` continue ``q`` with G^n for ``β_1 .. β_n``.
+
+    The Beta-constraints ``r^{(i)}(0) = sum_k B_{i,k}(β) q^{(k)}(1)`` (seed 000 eq. (6))
+    with the Bézier end derivatives ``q^{(k)}(1) = d!/(d-k)! ∇^k V_d`` and ``r^{(i)}(0) =
+    d!/(d-i)! Δ^i W_0`` (eq. (8)) fix one new point per order.  ``n = 1, 2`` give eq. (10)
+    and (11a) (tested equal to :func:`g1_stitch_points`, :func:`g2_stitch_points`).
+
+    Parameters
+    ----------
+    V : array_like of shape (d + 1, dim)
+        Control polygon of the left curve ``q``, ``d >= n`` (``r`` has the same degree).
+    betas : sequence of n floats
+        ``β_1 > 0, β_2, ..., β_n`` (``n <= MAX_CHAIN_RULE_ORDER``).
+
+    Returns
+    -------
+    ndarray of shape (n + 1, dim)
+    """
+    from math import comb, factorial
+
+    from .beta_constraints import apply_beta_constraints
+
+    b = as_real_array(betas, "betas", "a sequence (beta1, ..., betan) of real numbers")
+    if b.ndim != 1 or b.size == 0:
+        raise ValueError(
+            f"betas must be a sequence (beta1, ..., betan), n >= 1; got shape {b.shape}"
+        )
+    n = b.size
+    P = _polygon(V, min_points=2)
+    d = P.shape[0] - 1
+    if n > d:
+        raise ValueError(f"G^{n} stitching needs degree d >= n = {n}; V has degree {d}")
+    if not b[0] > 0:
+        raise ValueError(f"beta1 must be > 0; got {b[0]}")
+    q = np.stack([_backward(P, k) * (factorial(d) / factorial(d - k)) for k in range(1, n + 1)])
+    r = apply_beta_constraints(q, b)  # r^(1..n)(0)
+    W = [P[-1]]
+    for i in range(1, n + 1):
+        acc = r[i - 1] * (factorial(d - i) / factorial(d))
+        for j in range(i):
+            acc = acc - (-1) ** (i - j) * comb(i, j) * W[j]
+        W.append(acc)
+    return np.array(W)
+
+
+def _backward(P: np.ndarray, k: int) -> np.ndarray:
+    """``∇^k V_d = sum_j (-1)^j C(k, j) V_{d-j}``."""
+    from math import comb
+
+    return sum((-1) ** j * comb(k, j) * P[-1 - j] for j in range(k + 1))
+
+
+def gn_stitch(V: np.ndarray, betas: object, W_rest: np.ndarray | None = None) -> PiecewiseBezier:
+    """Two-segment curve ``q, r`` meeting with G^n for ``β_1 .. β_n`` (seed 000 eq. (6), (8)).
+
+    Parameters
+    ----------
+    W_rest : array_like of shape (d - n, dim)
+        The free points ``W_{n+1} .. W_d`` (``None`` or empty for ``d = n``).
+
+    Returns
+    -------
+    PiecewiseBezier
+        ``info``: ``beta1 .. beta{n}`` (one value each), ``betas``, ``W_fixed``.
+    """
+    P = _polygon(V, min_points=2)
+    W = gn_stitch_points(P, betas)
+    n = W.shape[0] - 1
+    R = _rest(W_rest, P.shape[0] - 1 - n, P.shape[1], f"G{n} fixed W_0 .. W_{n}")
+    b = tuple(float(x) for x in np.asarray(betas, dtype=float))
+    info: dict[str, object] = {f"beta{i + 1}": np.array([x]) for i, x in enumerate(b)}
+    info["betas"] = b
+    info["W_fixed"] = W
+    return PiecewiseBezier._fast([P, np.vstack([W, R])], info=info)

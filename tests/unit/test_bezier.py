@@ -122,7 +122,7 @@ def test_subdivision_reparametrizes_the_two_halves(split):
 @pytest.mark.parametrize(
     ("call", "exc", "match"),
     [
-        (lambda: bezier.evaluate([[0, 0]], 0.5), ValueError, "at least 2 points"),
+        (lambda: bezier.evaluate(np.zeros((0, 2)), 0.5), ValueError, "at least 1 points"),
         (
             lambda: bezier.evaluate([[0, 0, 0, 0], [1, 1, 1, 1]], 0.5),
             ValueError,

@@ -128,7 +128,7 @@ V3 = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.5], [4.0, 1.0]])
         (lambda: farin_boehm_gamma(1.0, -4.0, 3, joint=2), "at joint 2"),
         (lambda: farin_boehm(V3[-3:], -1.0, 0.0, 3), "beta1 must be > 0"),
         (lambda: farin_boehm(V3, 1.0, 0.0, 3), "exactly 3 points"),
-        (lambda: g1_stitch_points(V3[:2], 1.0), "at least 3 points"),
+        (lambda: g1_stitch_points(V3[:1], 1.0), "at least 2 points"),
         (lambda: g1_stitch_points([[0, 0], [1, 1], [1, 1]], 1.0), "coincide"),
         (lambda: g1_stitch(V3, 1.0, [[1.0, 1.0]]), r"W_rest must have shape \(2, 2\)"),
         (lambda: g2_stitch(V3, 1.0, 0.0), "W_rest must give the 1 free"),
