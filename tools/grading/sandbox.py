@@ -164,6 +164,9 @@ def kernel_environment(job: Path) -> dict[str, str]:
         "XDG_CACHE_HOME": str(job / ".cache"),
         "TMPDIR": "/tmp",
         "PYDEVD_DISABLE_FILE_VALIDATION": "1",
+        # the grader's own course_lib (the only part of the checkout the sandbox shows), even
+        # when the environment's editable install points at another checkout
+        "PYTHONPATH": str(_course_root()),
         "OPENBLAS_NUM_THREADS": "1",
         "OMP_NUM_THREADS": "1",
     }
