@@ -385,3 +385,16 @@ def test_hw03_q4_only_uniform_knots_put_every_joint_at_the_midpoint():
         P = _g1_points(D, knots)
         mid = all(np.allclose(P[3 * i], (P[3 * i - 1] + P[3 * i + 1]) / 2) for i in (1, 2))
         assert mid == (label == RIGHT["hw03.q4"])
+
+
+# ---------------------------------------------------------------- lecture numeric checks
+def test_lecture_numeric_checks_pass_right_and_fail_wrong_answers():
+    from course_lib.checks.lectures import check_number
+
+    right = {"lecture03.q2": 2.0, "lecture04.q2": 1.0, "lecture05.q2": 10}  # by hand
+    for qid, value in right.items():
+        assert check_number(qid, value).passed
+        assert not check_number(qid, value + 0.5).passed
+        assert check_number(qid, ...).status == "not answered"
+    assert not check_number("lecture09.q9", 1.0).passed
+    assert "10" not in check_number("lecture05.q2", 3).message

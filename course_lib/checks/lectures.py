@@ -1,0 +1,62 @@
+"""Numeric "check your understanding" questions of the lecture notebooks.
+
+A lecture must never contain the answer to its own question, not even as an expression
+such as ``expected=(3 - 1) / (1 - 0)``.  The expected values are computed here, at check
+time, from the question's data with ``course_lib`` -- never printed::
+
+    from course_lib.checks.lectures import check_number
+    check_number("lecture03.q2", my_beta1)
+
+Multiple-choice questions use :func:`course_lib.checks.quiz` with a salted hash instead.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+
+from ._core import Verdict, as_number, run_validate
+
+__all__ = ["LECTURE_QUESTIONS", "check_number"]
+
+
+def _beta1_for_knots() -> float:  # lecture 3, Q2: knots 0, 1, 3, local parameters
+    from ..knot_splines import knot_ratio_beta1
+
+    return float(knot_ratio_beta1(np.array([0.0, 1.0, 3.0]))[0])
+
+
+def _gamma_uniform() -> float:  # lecture 4, Q2: γ of eq. (12.1), d = 3, β1 = 1, β2 = 0
+    from ..stitching import farin_boehm_gamma
+
+    return float(farin_boehm_gamma(1.0, 0.0, d=3))
+
+
+def _shape_functions_g2() -> float:  # lecture 5, Q2: seed 001 counts n(n + 3) for G^n
+    from ..surfaces import count_shape_functions
+
+    return float(count_shape_functions(2))
+
+
+#: question id -> function computing the expected value from the question's data
+LECTURE_QUESTIONS: dict[str, Callable[[], float]] = {
+    "lecture03.q2": _beta1_for_knots,
+    "lecture04.q2": _gamma_uniform,
+    "lecture05.q2": _shape_functions_g2,
+}
+
+
+def check_number(question_id: str, answer: object, rtol: float = 1e-9) -> Verdict:
+    """Check a numeric lecture answer; never raises, never prints the expected value."""
+    if question_id not in LECTURE_QUESTIONS:
+        known = ", ".join(LECTURE_QUESTIONS)
+        return Verdict(str(question_id), False, f"unknown question id (known: {known}).")
+
+    def validate(a):
+        value = as_number(a, "your answer")
+        if np.isclose(value, LECTURE_QUESTIONS[question_id](), rtol=rtol, atol=1e-12):
+            return True, "correct."
+        return False, "not the expected value -- check your computation."
+
+    return run_validate(question_id, validate, answer)
