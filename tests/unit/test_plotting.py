@@ -426,6 +426,7 @@ def test_patch_pair_normals_along_the_boundary():
         base = np.column_stack([np.ones(5), np.linspace(0, 1, 5), np.zeros(5)])
         np.testing.assert_allclose(segs[:, 1], base, atol=1e-12)
         np.testing.assert_allclose(segs[:, 0] - segs[:, 1], [[0, 0, 0.5]] * 5, atol=1e-12)
+    assert ax3.get_zlim()[1] >= 0.5  # the arrow tips are inside the axes (not clipped)
     with pytest.raises(ValueError, match="3D Axes"):
         _fig2, ax2 = new_figure(pyplot=False)
         plot_patch_pair(ax2, F, G)
@@ -600,3 +601,21 @@ def test_fast_frame_rejects_an_irregular_point(ax):
         arts.update(cusp, [0.5])
     with pytest.raises(ValueError, match="not regular"):
         plot_curvature_comb(ax, cusp, samples=21)  # the grid meets u = 1/2
+
+
+def test_surface_figures_draw_the_domain_and_the_parameter_lines():
+    from course_lib.plotting.surface_figures import plot_domain_and_patch, plot_parameter_lines
+    from course_lib.surfaces import BezierPatch
+
+    x = np.linspace(0, 3, 4)
+    F = BezierPatch(np.array([[[a, b, 0.2 * a * b] for b in x] for a in x]))
+    _fig, ax = new_figure(pyplot=False, projection="3d")
+    art = plot_domain_and_patch(ax, F, below=1.0)
+    assert art["label"].get_text() == "D"
+    assert ax.get_zlim()[0] < -1.0  # the domain plane at z = -1 is inside the axes
+    grid = plot_parameter_lines(ax, F)
+    ident = plot_parameter_lines(ax, F, lambda s, t: (s, t))  # identity change
+    np.testing.assert_allclose(np.asarray(grid._segments3d[0]), np.asarray(ident._segments3d[0]))
+    with pytest.raises(ValueError, match="3D Axes"):
+        _fig2, ax2 = new_figure(pyplot=False)
+        plot_parameter_lines(ax2, F)
