@@ -619,3 +619,26 @@ def test_surface_figures_draw_the_domain_and_the_parameter_lines():
     with pytest.raises(ValueError, match="3D Axes"):
         _fig2, ax2 = new_figure(pyplot=False)
         plot_parameter_lines(ax2, F)
+
+
+def test_farin_boehm_names_two_units_when_asked(ax):
+    g, T, Wfb = farin_boehm_by_hand(V, 1.3, 2.0)
+    dg = plot_farin_boehm(ax, V, Wfb, T, 1.3, g, lengths=True)
+    texts = [dg.artists[f"ratio:{i}"].get_text() for i in range(4)]
+    assert texts[0] == "a" and texts[3] == "b" and texts[2] == f"γ·b = {g:.3g} b"
+    # the labelled lengths are right: |V1 V2| : |V2 T| = 1 : β1²γ and |T W1| : |W1 W2| = γ : 1
+    a, b = np.linalg.norm(V[2] - V[1]), np.linalg.norm(Wfb[2] - Wfb[1])
+    np.testing.assert_allclose(np.linalg.norm(T - V[2]), 1.3**2 * g * a)
+    np.testing.assert_allclose(np.linalg.norm(Wfb[1] - T), g * b)
+
+
+def test_beta_spline_construction_interior_only_and_labels_outside(ax):
+    Vp = np.array([[0, 0], [1, 2], [3, 2], [4, 0]], float)
+    segs = [[(Vp[i - 1] + Vp[i]) / 2, Vp[i], (Vp[i] + Vp[i + 1]) / 2] for i in (1, 2)]
+    dg = plot_beta_spline_construction(ax, PiecewiseBezier(segs), Vp, show="interior")
+    assert "curve" not in dg.artists and len(dg.artists["junctions"].get_xdata()) == 0
+    # V1 = (1, 2) is a top corner: its label goes up and left, away from the curve below
+    dx, dy = dg.artists["label:V1"].xyann
+    assert dy > 0 and dx < 0
+    with pytest.raises(ValueError, match="show"):
+        plot_beta_spline_construction(ax, PiecewiseBezier(segs), Vp, show="half")
