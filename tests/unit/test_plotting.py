@@ -642,3 +642,21 @@ def test_beta_spline_construction_interior_only_and_labels_outside(ax):
     assert dy > 0 and dx < 0
     with pytest.raises(ValueError, match="show"):
         plot_beta_spline_construction(ax, PiecewiseBezier(segs), Vp, show="half")
+
+
+def test_reparametrization_figure_draws_parallel_velocities_side_by_side():
+    from course_lib.plotting.reparametrization_figure import plot_reparametrization
+    from course_lib.reparametrization import ChangeOfVariables
+
+    Q = PiecewiseBezier([[[0, 0], [1, 2.2], [3.2, 2.4], [4, 0.4]]])
+    f = ChangeOfVariables.polynomial([0, 1.6, -0.6], (0, 1), (0, 1))  # v + 0.6 v (1 - v)
+    _fig, axes = new_figure(1, 2, pyplot=False)
+    art = plot_reparametrization(axes, Q, f, 0.3, scale=0.25)
+    qa, qb = art["velocity_Q"].quiver, art["velocity_Qf"].quiver
+    uq = np.array([qa.U[0], qa.V[0]])
+    uf = np.array([qb.U[0], qb.V[0]])
+    u0 = 0.3 + 0.6 * 0.3 * 0.7
+    np.testing.assert_allclose(uq, 0.25 * Q.evaluate(u0, 1))               # Q'(f(v)) × scale
+    np.testing.assert_allclose(uf, 0.25 * (1.6 - 1.2 * 0.3) * Q.evaluate(u0, 1))  # chain rule
+    bases = np.array([qa.X[0], qa.Y[0]]), np.array([qb.X[0], qb.Y[0]])
+    assert np.linalg.norm(bases[0] - bases[1]) > 0  # side by side: neither hides the other
