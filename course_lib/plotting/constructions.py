@@ -520,7 +520,9 @@ def plot_knot_joint_construction(
     diagram = Diagram(pts, lines, lab, ratios)
     diagram.artists["curve"] = plot_curve(ax, curve, polygon=True, points=False)
     offs = {}
-    for i in idx:
+    for i in idx:  # knot labels on the far side of the knot copy, away from the curve
+        ab = segs[i][1] - segs[i - 1][2]
+        away = np.array([ab[1], -ab[0]]) / (np.linalg.norm(ab) or 1.0)
         for nm in (f"ta{i}", f"tp{i}", f"tb{i}"):
-            offs[nm] = (4, -14)
+            offs[nm] = (float(14 * away[0]), float(14 * away[1]))
     return _draw(ax, diagram, label_offsets=offs)

@@ -42,18 +42,27 @@ def plot_reparametrization(axes, Q, f, v0: float, *, n: int = 9, scale: float = 
     art = {"curve": plot_curve(ax, Q, polygon=False, points=False, color="0.55")}
     P, S = Q.evaluate(us), Q.evaluate(f(vs))
     (art["dots"],) = ax.plot(*P.T, "o", ms=7, color=blue, label="Q(u), u equally spaced")
-    (art["squares"],) = ax.plot(*S.T, "s", ms=7, mfc="none", mec=red, mew=2,
-                                label="Q(f(v)), v equally spaced")
+    (art["squares"],) = ax.plot(
+        *S.T, "s", ms=7, mfc="none", mec=red, mew=2, label="Q(f(v)), v equally spaced"
+    )
     u0 = float(f(v0))
     p, vel = Q.evaluate(u0), Q.evaluate(u0, 1)
     vel_f = float(f(v0, 1)) * vel  # chain rule
     size = float(np.ptp(Q.evaluate(np.linspace(c, d, 65)), axis=0).max())
     normal = np.array([-vel[1], vel[0]]) / np.linalg.norm(vel)
     off = 0.03 * size * normal
-    art["velocity_Q"] = plot_vectors(ax, p + off, vel, scale=scale, color=blue, width=0.008,
-                                     label=f"Q'(u), drawn × {scale:g}")
-    art["velocity_Qf"] = plot_vectors(ax, p - off, vel_f, scale=scale, color=red, width=0.008,
-                                      label=f"(Q∘f)'(v), drawn × {scale:g}")
+    art["velocity_Q"] = plot_vectors(
+        ax, p + off, vel, scale=scale, color=blue, width=0.008, label=f"Q'(u), drawn × {scale:g}"
+    )
+    art["velocity_Qf"] = plot_vectors(
+        ax,
+        p - off,
+        vel_f,
+        scale=scale,
+        color=red,
+        width=0.008,
+        label=f"(Q∘f)'(v), drawn × {scale:g}",
+    )
     (art["point"],) = ax.plot(*p, "o", color="black", ms=8, zorder=8)
     tips = np.array([p + off + scale * vel, p - off + scale * vel_f])
     ax.update_datalim(tips)  # quivers do not autoscale: keep the arrow tips in view

@@ -660,3 +660,15 @@ def test_reparametrization_figure_draws_parallel_velocities_side_by_side():
     np.testing.assert_allclose(uf, 0.25 * (1.6 - 1.2 * 0.3) * Q.evaluate(u0, 1))  # chain rule
     bases = np.array([qa.X[0], qa.Y[0]]), np.array([qb.X[0], qb.Y[0]])
     assert np.linalg.norm(bases[0] - bases[1]) > 0  # side by side: neither hides the other
+
+
+def test_closeness_figure_one_panel_per_curve():
+    from course_lib.plotting.closeness_figure import plot_closeness
+
+    ref = np.column_stack([np.cos(np.linspace(0, 3, 20)), np.sin(np.linspace(0, 3, 20))])
+    _fig, axes = new_figure(1, 2, pyplot=False)
+    lines = plot_closeness(axes, ref, [(ref * 1.01, "a", "A"), (ref * 0.99, "b", "B")])
+    assert len(lines) == 4 and axes[1].get_title() == "B"
+    np.testing.assert_allclose(lines[3].get_xydata(), ref * 0.99)
+    with pytest.raises(ValueError, match="one Axes per curve"):
+        plot_closeness(axes, ref, [(ref, "a", "A")])
