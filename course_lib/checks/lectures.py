@@ -21,6 +21,38 @@ from ._core import Verdict, as_number, run_validate
 __all__ = ["LECTURE_QUESTIONS", "check_number"]
 
 
+def _speed_after_reparametrization() -> float:  # lecture 1, Q3: speed of q(2v) at the joint
+    import sympy as sp
+
+    from ..differential_geometry import speed
+    from ..parametrization import ParametricCurve
+    from ..reparametrization import ChangeOfVariables, Reparametrized
+
+    u = sp.Symbol("u")
+    q = ParametricCurve.from_sympy([2 * u, u], u, (0.0, 1.0))
+    q_tilde = Reparametrized(q, ChangeOfVariables.affine((0.0, 0.5), (0.0, 1.0)))
+    return float(speed(q_tilde, 0.5))
+
+
+def _beta2_of_a_joint() -> float:  # lecture 2, Q3: the second Beta-constraint solved for β2
+    from ..beta_constraints import solve_shape_parameters
+
+    q_derivs = [np.array([1.0, 0.0]), np.array([0.0, 1.0])]
+    r_derivs = [np.array([2.0, 0.0]), np.array([3.0, 4.0])]
+    return float(solve_shape_parameters(q_derivs, r_derivs).betas[1])
+
+
+def _kappa_circle_radius_2() -> float:  # lecture 3, Q4: signed curvature, radius 2, ccw
+    import sympy as sp
+
+    from ..differential_geometry import signed_curvature
+    from ..parametrization import ParametricCurve
+
+    t = sp.Symbol("t")
+    circle = ParametricCurve.from_sympy([2 * sp.cos(t), 2 * sp.sin(t)], t, (0.0, 6.0))
+    return float(signed_curvature(circle, 1.0))
+
+
 def _beta1_for_knots() -> float:  # lecture 3, Q2: knots 0, 1, 3, local parameters
     from ..knot_splines import knot_ratio_beta1
 
@@ -41,7 +73,10 @@ def _shape_functions_g2() -> float:  # lecture 5, Q2: seed 001 counts n(n + 3) f
 
 #: question id -> function computing the expected value from the question's data
 LECTURE_QUESTIONS: dict[str, Callable[[], float]] = {
+    "lecture01.q3": _speed_after_reparametrization,
+    "lecture02.q3": _beta2_of_a_joint,
     "lecture03.q2": _beta1_for_knots,
+    "lecture03.q4": _kappa_circle_radius_2,
     "lecture04.q2": _gamma_uniform,
     "lecture05.q2": _shape_functions_g2,
 }

@@ -391,7 +391,14 @@ def test_hw03_q4_only_uniform_knots_put_every_joint_at_the_midpoint():
 def test_lecture_numeric_checks_pass_right_and_fail_wrong_answers():
     from course_lib.checks.lectures import check_number
 
-    right = {"lecture03.q2": 2.0, "lecture04.q2": 1.0, "lecture05.q2": 10}  # by hand
+    right = {  # by hand
+        "lecture01.q3": np.hypot(4, 2),  # q~'(v) = 2 q'(2v) = (4, 2)
+        "lecture02.q3": 3.0,  # (3, 4) = 2² (0, 1) + β2 (1, 0)
+        "lecture03.q2": 2.0,
+        "lecture03.q4": 0.5,  # 1 / radius, counterclockwise: left turn
+        "lecture04.q2": 1.0,
+        "lecture05.q2": 10,
+    }
     for qid, value in right.items():
         assert check_number(qid, value).passed
         assert not check_number(qid, value + 0.5).passed
