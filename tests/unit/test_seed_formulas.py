@@ -79,13 +79,16 @@ def test_seed_001_convention_gives_the_inverse_betas():
     assert np.allclose(num, [float(w.subs(u, 0)) for w in seed_form])
 
 
-def test_cubic_system_is_singular_exactly_where_gamma_is_undefined():
-    b1, b2 = sp.symbols("beta1 beta2")
-    eqs, a, _ = sf.blending_system(2, [b1, b2])
-    det = sp.factor(sp.linear_eq_to_matrix(eqs, a)[0].det())
-    assert sp.rem(sp.numer(det), b2 + 2 * b1 * (1 + b1), b2) == 0
+@pytest.mark.parametrize("b1", [sp.Rational(1, 2), sp.Integer(1), sp.Integer(2)])
+def test_cubic_system_is_singular_exactly_where_gamma_is_undefined(b1):
+    # γ's denominator β2 + 2 β1 (1 + β1) vanishes: the 16 x 16 system loses rank there only
+    b2_star = -2 * b1 * (1 + b1)
+    for b2, deficit in ((b2_star, 1), (b2_star + 1, 0), (sp.Integer(0), 0)):
+        eqs, a, _ = sf.blending_system(2, [b1, b2])
+        M = np.array(sp.linear_eq_to_matrix(eqs, a)[0], dtype=float)
+        assert M.shape[1] - np.linalg.matrix_rank(M) == deficit
     with pytest.raises(ValueError, match="unique"):
-        sf.blending_basis(2, [1, -4])
+        sf.blending_basis(2, [b1, b2_star])
 
 
 def test_quartic_basis_fails_for_admissible_positive_betas():
