@@ -65,6 +65,20 @@ def _gamma_uniform() -> float:  # lecture 4, Q2: γ of eq. (12.1), d = 3, β1 = 
     return float(farin_boehm_gamma(1.0, 0.0, d=3))
 
 
+def _w1_x_for_beta1_half() -> float:  # lecture 4, Q3: x of W_1, V_2 = (1, 2), V_3 = (3, 2)
+    from ..stitching import g1_stitch
+
+    q = np.array([[0.0, 0.0], [0.5, 1.0], [1.0, 2.0], [3.0, 2.0]])
+    stitched = g1_stitch(q, beta1=0.5, W_rest=[[6.0, 1.0], [7.0, 0.0]])
+    return float(stitched.segments[1][1][0])
+
+
+def _beta2_in_course_convention() -> float:  # lecture 5, Q3: seed 001's (2, 1, 0) -> β2
+    from ..seed_formulas import inverse_betas
+
+    return float(inverse_betas((2.0, 1.0, 0.0))[1])
+
+
 def _shape_functions_g2() -> float:  # lecture 5, Q2: seed 001 counts n(n + 3) for G^n
     from ..surfaces import count_shape_functions
 
@@ -78,7 +92,9 @@ LECTURE_QUESTIONS: dict[str, Callable[[], float]] = {
     "lecture03.q2": _beta1_for_knots,
     "lecture03.q4": _kappa_circle_radius_2,
     "lecture04.q2": _gamma_uniform,
+    "lecture04.q3": _w1_x_for_beta1_half,
     "lecture05.q2": _shape_functions_g2,
+    "lecture05.q3": _beta2_in_course_convention,
 }
 
 

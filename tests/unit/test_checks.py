@@ -398,6 +398,8 @@ def test_lecture_numeric_checks_pass_right_and_fail_wrong_answers():
         "lecture03.q4": 0.5,  # 1 / radius, counterclockwise: left turn
         "lecture04.q2": 1.0,
         "lecture05.q2": 10,
+        "lecture04.q3": 4.0,  # W1 = V3 + 0.5 (V3 - V2) = (3, 2) + 0.5 (2, 0)
+        "lecture05.q3": -0.125,  # -β2 / β1³ = -1 / 8
     }
     for qid, value in right.items():
         assert check_number(qid, value).passed
