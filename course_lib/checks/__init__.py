@@ -35,10 +35,17 @@ store a *hash* of the right answer in the notebook (never the answer itself)::
     check_choice("lecture03.q1", my_answer, "5f1e...")
 
 Answers are compared case-, space- and order-insensitively (``"B, d"`` == ``["d", "b"]``).
-For a numeric answer use :func:`check_value`, which compares against a value the notebook
-computes (e.g. with ``course_lib``) and never prints it::
+For a numeric answer in a lecture use :func:`course_lib.checks.lectures.check_number`,
+whose expected value is computed at check time in :mod:`course_lib.checks.lectures` (a
+lecture must not contain its answers, not even as an expression)::
 
-    check_value("lecture02.q2", my_kappa, expected=float(kappa_at_1), rtol=1e-6)
+    from course_lib.checks.lectures import check_number
+    check_number("lecture03.q2", my_beta1)
+
+:func:`check_value` compares against a value passed in by the caller and never prints it
+(for solution notebooks and tests)::
+
+    check_value("hw02.extra", my_kappa, expected=float(kappa_at_1), rtol=1e-6)
 
 :func:`quiz` shows a question with its choices and the verdict in one call.
 

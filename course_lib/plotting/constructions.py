@@ -137,6 +137,7 @@ def _draw(ax, diagram: Diagram, *, label_offsets: Mapping[str, tuple] | None = N
             bbox=dict(boxstyle="round,pad=0.15", fc="white", ec=OKABE_ITO["bluish_green"], lw=0.8),
         )
     ax.set_aspect("equal", adjustable="datalim")
+    ax.margins(0.15)  # room for the labels next to the outermost points (e.g. T)
     ax.autoscale_view()
     return diagram
 
@@ -194,8 +195,13 @@ def plot_g1_stitch(
     W = as_points(W, "W", min_points=2, dims=(2,))
     d, pts, lines, lab = _stitch_parts(V, W, labels)
     ratios = [
-        (f"V{d - 1}", f"V{d}", "1", 1.0),
-        ("W0", "W1", "β₁" if beta1 is None else f"β₁ = {beta1:.3g}", 1.0),
+        (f"V{d - 1}", f"V{d}", "1", _away(V[d - 1], V[d], V[:-1].mean(axis=0))),
+        (
+            "W0",
+            "W1",
+            "β₁" if beta1 is None else f"β₁ = {beta1:.3g}",
+            _away(W[0], W[1], W[1:].mean(axis=0)),
+        ),
     ]
     diagram = Diagram(pts, lines, lab, ratios)
     if curve:
@@ -217,6 +223,7 @@ def plot_farin_boehm(
     *,
     curve: bool = True,
     labels: bool = True,
+    lengths: bool = False,
 ) -> Diagram:
     """Seed 000 Fig. 8: the Farin-Boehm construction of ``W_0, W_1, W_2`` (eq. (12)).
 
@@ -232,6 +239,10 @@ def plot_farin_boehm(
         The auxiliary point (from the construction, e.g. ``curve.info["T"]``).
     beta1, gamma : float, optional
         Values shown in the ratio labels.
+    lengths : bool
+        Name the lengths instead of marking the unit of each ratio with "1": the leg
+        ``V_{d-2} V_{d-1}`` is ``a``, ``V_{d-1} T`` is ``β1²γ a``, ``W_1 W_2`` is ``b`` and
+        ``T W_1`` is ``γ b`` (two different units: the plain "1" twice is ambiguous).
 
     Returns
     -------
@@ -255,11 +266,15 @@ def plot_farin_boehm(
         lab["T"] = "$T$"
     g = "γ" if gamma is None else f"γ={gamma:.3g}"
     bg = "β₁²γ" if beta1 is None or gamma is None else f"β₁²γ={beta1**2 * gamma:.3g}"
+    units = ("a", "b") if lengths else ("1", "1")
+    if lengths:
+        bg = "β₁²γ·a" if beta1 is None or gamma is None else f"β₁²γ·a = {beta1**2 * gamma:.3g} a"
+        g = "γ·b" if gamma is None else f"γ·b = {gamma:.3g} b"
     ratios = [
-        (f"V{d - 2}", f"V{d - 1}", "1", -1.0),
+        (f"V{d - 2}", f"V{d - 1}", units[0], _away(V[d - 2], V[d - 1], V[d])),
         (f"V{d - 1}", "T", bg, -1.0),
         ("T", "W1", g, 1.0),
-        ("W1", "W2", "1", 1.0),
+        ("W1", "W2", units[1], _away(W[1], W[2], np.delete(W, [1, 2], axis=0).mean(axis=0))),
     ]
     diagram = Diagram(pts, lines, lab, ratios)
     if curve:
@@ -320,6 +335,7 @@ def plot_beta_spline_construction(
     *,
     labels: bool = True,
     bezier_polygons: bool = True,
+    show: str = "all",
 ) -> Diagram:
     """Seed 000 Fig. 10 (quadratic) / Fig. 11 (cubic): a Beta-spline built on its control polygon.
 
@@ -334,6 +350,10 @@ def plot_beta_spline_construction(
         The Beta-spline (quadratic or cubic segments).
     V : array_like of shape (m + 1, 2)
         Its control polygon.
+    show : {"all", "interior"}
+        ``"interior"`` draws only the polygon and the interior Bézier vertices (seed 000
+        Fig. 11 (a)); ``"all"`` adds the curve, the links and the junction vertices (b).
+        Vertex labels sit outside the polygon's corners, away from the curve.
 
     Returns
     -------
@@ -341,6 +361,8 @@ def plot_beta_spline_construction(
         Points ``V*`` and ``J*`` (junctions), ``I*_*`` (interior vertices); ``"curve"`` artists.
     """
     V = as_points(V, "V", min_points=2, dims=(2,))
+    if show not in ("all", "interior"):
+        raise ValueError(f"show must be 'all' or 'interior'; got {show!r}")
     degs = set(curve.degrees)
     if len(degs) != 1 or degs.pop() not in (2, 3):
         raise ValueError(
@@ -355,18 +377,21 @@ def plot_beta_spline_construction(
         for r in range(1, d):
             pts[f"I{j}_{r}"] = s[r]
     pts[f"J{len(segs)}"] = segs[-1][-1]
-    if d == 3:
+    if d == 3 and show == "all":
         for j in range(1, len(segs)):
             lines[f"link{j}"] = ((f"I{j - 1}_2", f"J{j}", f"I{j}_1"), "aux")
     lab = {}
     if labels:
         lab = {f"V{i}": f"$V_{{{i}}}$" for i in range(V.shape[0])}
     diagram = Diagram(pts, lines, lab, [])
-    diagram.artists["curve"] = plot_curve(
-        ax, curve, polygon=bezier_polygons, points=False, joints=False
-    )
-    _draw(ax, diagram)
+    if show == "all":
+        diagram.artists["curve"] = plot_curve(
+            ax, curve, polygon=bezier_polygons, points=False, joints=False
+        )
+    _draw(ax, diagram, label_offsets=_outward_offsets(V))
     J = np.array([pts[f"J{j}"] for j in range(len(segs) + 1)])
+    if show == "interior":
+        J = J[:0]
     (jm,) = ax.plot(
         J[:, 0],
         J[:, 1],
@@ -394,6 +419,25 @@ def plot_beta_spline_construction(
         )
         diagram.artists["interior"] = im
     return diagram
+
+
+def _away(P: np.ndarray, Q: np.ndarray, R: np.ndarray) -> float:
+    """Side (+1 left of P->Q, -1 right) for a label on PQ, away from the point R (where the
+    curve is: inside its control polygon)."""
+    d, r = Q - P, R - P
+    return -1.0 if d[0] * r[1] - d[1] * r[0] > 0 else 1.0
+
+
+def _outward_offsets(V: np.ndarray, dist: float = 9.0) -> dict:
+    """Label offsets (points) pointing out of each polygon corner, where the curve is not."""
+    out = {}
+    for i in range(V.shape[0]):
+        nb = [V[j] for j in (i - 1, i + 1) if 0 <= j < V.shape[0]]
+        d = V[i] - np.mean(nb, axis=0)
+        n = np.linalg.norm(d)
+        d = d / n if n > 0 else np.array([0.7, 0.7])
+        out[f"V{i}"] = (float(dist * d[0]), float(dist * d[1]))
+    return out
 
 
 # ----------------------------------------------------------- Finn's knots
@@ -476,7 +520,9 @@ def plot_knot_joint_construction(
     diagram = Diagram(pts, lines, lab, ratios)
     diagram.artists["curve"] = plot_curve(ax, curve, polygon=True, points=False)
     offs = {}
-    for i in idx:
+    for i in idx:  # knot labels on the far side of the knot copy, away from the curve
+        ab = segs[i][1] - segs[i - 1][2]
+        away = np.array([ab[1], -ab[0]]) / (np.linalg.norm(ab) or 1.0)
         for nm in (f"ta{i}", f"tp{i}", f"tb{i}"):
-            offs[nm] = (4, -14)
+            offs[nm] = (float(14 * away[0]), float(14 * away[1]))
     return _draw(ax, diagram, label_offsets=offs)

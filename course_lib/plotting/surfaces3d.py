@@ -169,5 +169,19 @@ def plot_patch_pair(
             arrow_length_ratio=0.15,
             label="normal of G at u = 0",
         )
+    # quivers do not autoscale: make room for the arrow tips so no normal is clipped
+    pts = [F.control_net.reshape(-1, 3), G.control_net.reshape(-1, 3)]
+    if normals:
+        pts += [p + dF, q + dG]
+    _fit_limits(ax, np.vstack(pts))
     ax.set_box_aspect((1, 1, 1))
     return PatchPairArtists(a, b, bd, nF, nG, v, float(length))
+
+
+def _fit_limits(ax, P: np.ndarray, margin: float = 0.05) -> None:
+    """Set the 3D axes limits to contain the points ``P`` (n, 3) with a margin."""
+    lo, hi = P.min(axis=0), P.max(axis=0)
+    pad = margin * np.maximum(hi - lo, 1e-9)
+    ax.set_xlim(lo[0] - pad[0], hi[0] + pad[0])
+    ax.set_ylim(lo[1] - pad[1], hi[1] + pad[1])
+    ax.set_zlim(lo[2] - pad[2], hi[2] + pad[2])

@@ -328,7 +328,16 @@ def plot_frame(
         qt = _quiver(ax, p, v, ROLE_COLORS["tangent"], "unit tangent T" if labels else None, zorder)
     if normal:
         v = dg.unit_normal(curve, tt) * length
-        qn = _quiver(ax, p, v, ROLE_COLORS["normal"], "unit normal N" if labels else None, zorder)
+        # thin and on top: the curvature vector (parallel to N) must not hide it
+        qn = _quiver(
+            ax,
+            p,
+            v,
+            ROLE_COLORS["normal"],
+            "unit normal N" if labels else None,
+            zorder + 0.5,
+            width=0.004 if curvature else 0.006,
+        )
     if curvature:
         v = dg.curvature_vector(curve, tt) * curvature_scale
         qk = _quiver(
@@ -337,7 +346,8 @@ def plot_frame(
             v,
             ROLE_COLORS["curvature"],
             "curvature vector dT/ds" if labels else None,
-            zorder,
+            zorder - 0.5 if normal else zorder,
+            width=0.011 if normal else 0.006,
         )
     return FrameArtists(pt, qt, qn, qk, float(length), float(curvature_scale))
 

@@ -426,6 +426,7 @@ def test_patch_pair_normals_along_the_boundary():
         base = np.column_stack([np.ones(5), np.linspace(0, 1, 5), np.zeros(5)])
         np.testing.assert_allclose(segs[:, 1], base, atol=1e-12)
         np.testing.assert_allclose(segs[:, 0] - segs[:, 1], [[0, 0, 0.5]] * 5, atol=1e-12)
+    assert ax3.get_zlim()[1] >= 0.5  # the arrow tips are inside the axes (not clipped)
     with pytest.raises(ValueError, match="3D Axes"):
         _fig2, ax2 = new_figure(pyplot=False)
         plot_patch_pair(ax2, F, G)
@@ -600,3 +601,74 @@ def test_fast_frame_rejects_an_irregular_point(ax):
         arts.update(cusp, [0.5])
     with pytest.raises(ValueError, match="not regular"):
         plot_curvature_comb(ax, cusp, samples=21)  # the grid meets u = 1/2
+
+
+def test_surface_figures_draw_the_domain_and_the_parameter_lines():
+    from course_lib.plotting.surface_figures import plot_domain_and_patch, plot_parameter_lines
+    from course_lib.surfaces import BezierPatch
+
+    x = np.linspace(0, 3, 4)
+    F = BezierPatch(np.array([[[a, b, 0.2 * a * b] for b in x] for a in x]))
+    _fig, ax = new_figure(pyplot=False, projection="3d")
+    art = plot_domain_and_patch(ax, F, below=1.0)
+    assert art["label"].get_text() == "D"
+    assert ax.get_zlim()[0] < -1.0  # the domain plane at z = -1 is inside the axes
+    grid = plot_parameter_lines(ax, F)
+    ident = plot_parameter_lines(ax, F, lambda s, t: (s, t))  # identity change
+    np.testing.assert_allclose(np.asarray(grid._segments3d[0]), np.asarray(ident._segments3d[0]))
+    with pytest.raises(ValueError, match="3D Axes"):
+        _fig2, ax2 = new_figure(pyplot=False)
+        plot_parameter_lines(ax2, F)
+
+
+def test_farin_boehm_names_two_units_when_asked(ax):
+    g, T, Wfb = farin_boehm_by_hand(V, 1.3, 2.0)
+    dg = plot_farin_boehm(ax, V, Wfb, T, 1.3, g, lengths=True)
+    texts = [dg.artists[f"ratio:{i}"].get_text() for i in range(4)]
+    assert texts[0] == "a" and texts[3] == "b" and texts[2] == f"γ·b = {g:.3g} b"
+    # the labelled lengths are right: |V1 V2| : |V2 T| = 1 : β1²γ and |T W1| : |W1 W2| = γ : 1
+    a, b = np.linalg.norm(V[2] - V[1]), np.linalg.norm(Wfb[2] - Wfb[1])
+    np.testing.assert_allclose(np.linalg.norm(T - V[2]), 1.3**2 * g * a)
+    np.testing.assert_allclose(np.linalg.norm(Wfb[1] - T), g * b)
+
+
+def test_beta_spline_construction_interior_only_and_labels_outside(ax):
+    Vp = np.array([[0, 0], [1, 2], [3, 2], [4, 0]], float)
+    segs = [[(Vp[i - 1] + Vp[i]) / 2, Vp[i], (Vp[i] + Vp[i + 1]) / 2] for i in (1, 2)]
+    dg = plot_beta_spline_construction(ax, PiecewiseBezier(segs), Vp, show="interior")
+    assert "curve" not in dg.artists and len(dg.artists["junctions"].get_xdata()) == 0
+    # V1 = (1, 2) is a top corner: its label goes up and left, away from the curve below
+    dx, dy = dg.artists["label:V1"].xyann
+    assert dy > 0 and dx < 0
+    with pytest.raises(ValueError, match="show"):
+        plot_beta_spline_construction(ax, PiecewiseBezier(segs), Vp, show="half")
+
+
+def test_reparametrization_figure_draws_parallel_velocities_side_by_side():
+    from course_lib.plotting.reparametrization_figure import plot_reparametrization
+    from course_lib.reparametrization import ChangeOfVariables
+
+    Q = PiecewiseBezier([[[0, 0], [1, 2.2], [3.2, 2.4], [4, 0.4]]])
+    f = ChangeOfVariables.polynomial([0, 1.6, -0.6], (0, 1), (0, 1))  # v + 0.6 v (1 - v)
+    _fig, axes = new_figure(1, 2, pyplot=False)
+    art = plot_reparametrization(axes, Q, f, 0.3, scale=0.25)
+    qa, qb = art["velocity_Q"].quiver, art["velocity_Qf"].quiver
+    uq = np.array([qa.U[0], qa.V[0]])
+    uf = np.array([qb.U[0], qb.V[0]])
+    u0 = 0.3 + 0.6 * 0.3 * 0.7
+    np.testing.assert_allclose(uq, 0.25 * Q.evaluate(u0, 1))               # Q'(f(v)) × scale
+    np.testing.assert_allclose(uf, 0.25 * (1.6 - 1.2 * 0.3) * Q.evaluate(u0, 1))  # chain rule
+    bases = np.array([qa.X[0], qa.Y[0]]), np.array([qb.X[0], qb.Y[0]])
+    assert np.linalg.norm(bases[0] - bases[1]) > 0  # side by side: neither hides the other
+
+
+def test_closeness_figure_one_panel_per_curve():
+    from course_lib.plotting.closeness_figure import plot_closeness
+
+    ref = np.column_stack([np.cos(np.linspace(0, 3, 20)), np.sin(np.linspace(0, 3, 20))])
+    _fig, axes = new_figure(1, 2, pyplot=False)
+    lines = plot_closeness(axes, ref, [(ref * 1.01, "a", "A"), (ref * 0.99, "b", "B")])
+    assert len(lines) == 4 and axes[1].get_title() == "B"
+    np.testing.assert_allclose(lines[3].get_xydata(), ref * 0.99)
+    with pytest.raises(ValueError, match="one Axes per curve"):
+        plot_closeness(axes, ref, [(ref, "a", "A")])

@@ -1,0 +1,220 @@
+"""The measurable rules of a lecture notebook (CONTRIBUTING.md, "Lecture notebooks").
+
+Applies to every ``notebooks/NN_*.ipynb`` except ``00_welcome``.  Static checks only
+(json + ast + tokenize): the whole file runs in well under a second.
+"""
+
+from __future__ import annotations
+
+import ast
+import io
+import json
+import re
+import tokenize
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+NOTEBOOKS = sorted(
+    p for p in (ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb") if not p.name.startswith("00_")
+)
+IDS = [p.stem for p in NOTEBOOKS]
+
+MIN_PROSE_RATIO = 2.5  # characters of markdown per character of code
+MAX_LINE = 88  # characters per code line
+MAX_CELLS = 45  # a 50-minute class
+MAX_HELPER_LINES = 5  # body lines of a function defined in a lecture
+EVIDENCE_TAG = "evidence"
+CHECK_CALLS = ("quiz", "check_choice", "check_value", "check_number", "check")
+
+
+def _cells(path: Path) -> list[dict]:
+    return json.loads(path.read_text())["cells"]
+
+
+def _src(cell: dict) -> str:
+    return "".join(cell["source"])
+
+
+def _code_cells(path: Path) -> list[dict]:
+    return [c for c in _cells(path) if c["cell_type"] == "code"]
+
+
+def _python(cell: dict) -> str:
+    """The cell's source with IPython magics (``%...``, ``!...``) blanked out."""
+    return "\n".join(
+        "" if line.lstrip().startswith(("%", "!")) else line for line in _src(cell).splitlines()
+    )
+
+
+def _tags(cell: dict) -> list[str]:
+    return cell.get("metadata", {}).get("tags", [])
+
+
+def _lecture_number(path: Path) -> int:
+    return int(path.name[:2])
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=IDS)
+def test_prose_outweighs_code(path):
+    cells = _cells(path)
+    prose = sum(len(_src(c)) for c in cells if c["cell_type"] == "markdown")
+    code = sum(len(_src(c)) for c in cells if c["cell_type"] == "code")
+    assert prose >= MIN_PROSE_RATIO * code, (
+        f"{path.name}: prose:code = {prose / code:.2f} < {MIN_PROSE_RATIO} (characters); "
+        "explain more or move code into course_lib"
+    )
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=IDS)
+def test_code_lines_are_short(path):
+    long = [
+        (c["id"], len(line))
+        for c in _code_cells(path)
+        for line in _src(c).splitlines()
+        if len(line) > MAX_LINE
+    ]
+    assert not long, f"{path.name}: code lines longer than {MAX_LINE} characters: {long}"
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=IDS)
+def test_fits_one_class(path):
+    n = len(_cells(path))
+    assert n <= MAX_CELLS, f"{path.name}: {n} cells > {MAX_CELLS}; merge cells or split it"
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=IDS)
+def test_no_semicolon_chains(path):
+    """``a; b`` is two statements on one line; only a final ``;`` (hide the output) is allowed."""
+    bad = []
+    for c in _code_cells(path):
+        src = _python(c).rstrip()
+        toks = list(tokenize.generate_tokens(io.StringIO(src + "\n").readline))
+        semis = [t for t in toks if t.type == tokenize.OP and t.string == ";"]
+        final = len(semis) == 1 and semis[0].end == (
+            len(src.splitlines()),
+            len(src.splitlines()[-1]),
+        )
+        if semis and not final:
+            bad.append(c["id"])
+    assert not bad, f"{path.name}: ';' between statements in cells {bad}"
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=IDS)
+def test_no_side_effect_comprehensions_or_long_helpers(path):
+    problems = []
+    for c in _code_cells(path):
+        tree = ast.parse(_python(c))
+        comps = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
+        for k, stmt in enumerate(tree.body):
+            shown = k == len(tree.body) - 1 and not _src(c).rstrip().endswith(";")
+            if isinstance(stmt, ast.Expr) and isinstance(stmt.value, comps) and not shown:
+                problems.append(f"{c['id']}: comprehension used as a statement")
+        for node in ast.walk(tree):
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                body = node.end_lineno - node.lineno
+                if body > MAX_HELPER_LINES:
+                    problems.append(
+                        f"{c['id']}: {node.name} has {body} lines; move it to course_lib"
+                    )
+    assert not problems, f"{path.name}: " + "; ".join(problems)
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=IDS)
+def test_assert_only_cells_are_tagged_evidence_and_collapsed(path):
+    bad = []
+    for c in _code_cells(path):
+        body = ast.parse(_python(c)).body
+        assert_only = bool(body) and all(isinstance(s, ast.Assert) for s in body)
+        tagged = EVIDENCE_TAG in _tags(c)
+        hidden = c.get("metadata", {}).get("jupyter", {}).get("source_hidden") is True
+        if (assert_only and not tagged) or (tagged and not hidden):
+            bad.append(c["id"])
+    assert not bad, (
+        f"{path.name}: cells {bad} must carry the tag {EVIDENCE_TAG!r} and "
+        "metadata jupyter.source_hidden = true (assert-only cells, CONTRIBUTING.md)"
+    )
+
+
+def _literal_only(node: ast.AST) -> bool:
+    return all(
+        isinstance(n, (ast.Constant, ast.BinOp, ast.UnaryOp, ast.operator, ast.unaryop))
+        for n in ast.walk(node)
+    )
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=IDS)
+def test_no_answers_in_the_lecture(path):
+    """Checks compare with a hash or a value computed in course_lib.checks, never a literal."""
+    problems = []
+    cells = _cells(path)
+    for k, c in enumerate(cells):
+        if c["cell_type"] != "code":
+            continue
+        tree = ast.parse(_python(c))
+        calls = [
+            n
+            for n in ast.walk(tree)
+            if isinstance(n, ast.Call) and getattr(n.func, "id", None) in CHECK_CALLS
+        ]
+        for call in calls:
+            if call.func.id == "check_value":
+                problems.append(f"{c['id']}: check_value takes the answer from the notebook")
+            for kw in call.keywords:
+                if kw.arg == "expected" and _literal_only(kw.value):
+                    problems.append(f"{c['id']}: literal expected value")
+        nxt = cells[k + 1] if k + 1 < len(cells) else None
+        if calls and nxt and nxt["cell_type"] == "markdown":
+            first = _src(nxt).lstrip()
+            if not (first.startswith("#") or first.startswith("**Q")):
+                problems.append(f"{nxt['id']}: prose right after a check (an answer?)")
+    assert not problems, f"{path.name}: " + "; ".join(problems)
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=IDS)
+def test_summary_references_and_links(path):
+    cells = _cells(path)
+    headings = [
+        line.strip()
+        for c in cells
+        if c["cell_type"] == "markdown"
+        for line in _src(c).splitlines()
+        if line.startswith("## ")
+    ]
+    assert "## Summary" in headings and "## References" in headings, (
+        f"{path.name}: needs '## Summary' and '## References' sections"
+    )
+    assert headings.index("## Summary") < headings.index("## References")
+    first, last = _src(cells[0]), _src(cells[-1])
+    n = _lecture_number(path)
+    names = {_lecture_number(p): p.name for p in NOTEBOOKS}
+    assert "00_welcome.ipynb" in first
+    if n - 1 in names:
+        assert f"({names[n - 1]})" in first, (
+            f"{path.name}: first cell must link the previous lecture"
+        )
+    if n + 1 in names:
+        assert f"({names[n + 1]})" in last, f"{path.name}: last cell must link the next lecture"
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=IDS)
+def test_one_notation_and_static_figures(path):
+    cells = _cells(path)
+    prose = "\n".join(_src(c) for c in cells if c["cell_type"] == "markdown")
+    code = "\n".join(_src(c) for c in cells if c["cell_type"] == "code")
+    assert not re.search(r"\s--\s", prose), f"{path.name}: write a dash as '—', not '--'"
+    assert "%matplotlib widget" not in code, (
+        f"{path.name}: static figures only; demos make their own interactive canvases"
+    )
+    positive = [
+        c["id"]
+        for c in _code_cells(path)
+        for n in ast.walk(ast.parse(_python(c)))
+        if isinstance(n, ast.Call)
+        and getattr(n.func, "attr", None) in ("symbols", "Symbol")
+        and any(k.arg == "positive" for k in n.keywords)
+        and n.args
+        and re.search(r"beta[2-9]|β[2-9]", str(getattr(n.args[0], "value", "")))
+    ]
+    assert not positive, f"{path.name}: only β1 is positive; β2, β3, ... are real ({positive})"
