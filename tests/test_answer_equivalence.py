@@ -482,9 +482,19 @@ def _grade(qid: str, value) -> tuple[float, str]:
 
 
 def test_every_question_has_a_table():
-    assert sorted(TABLE) == sorted(ALL_IDS)
+    missing = [q for q in ALL_IDS if q not in TABLE]
+    assert not missing, (
+        f"no row in TABLE (tests/test_answer_equivalence.py) for {missing}: add one per question, "
+        '"hwNN.qK": ([>= 2 accepted forms of the right answer], [>= 3 typical wrong answers]), '
+        "the right answer derived by hand (CONTRIBUTING.md, 'Homework: the rules the tests enforce')"
+    )
+    stale = sorted(set(TABLE) - set(ALL_IDS))
+    assert not stale, f"TABLE has rows for questions no checks module registers: {stale}"
     for qid, (right, wrong) in TABLE.items():
-        assert len(right) >= 2 and len(wrong) >= 3, qid
+        assert len(right) >= 2 and len(wrong) >= 3, (
+            f"{qid}: TABLE needs >= 2 accepted forms and >= 3 typical wrong answers, "
+            f"it has {len(right)} and {len(wrong)}"
+        )
 
 
 def _cases(kind: int):

@@ -1,7 +1,7 @@
 """The grading command, end to end (tools/grade.py with nbclient kernels).
 
-* the solution notebooks score full marks and the blank exercises score zero, for all four
-  homework sets, against the hidden tests in solutions/hidden_tests/;
+* the solution notebooks score full marks and the blank exercises score zero, for every
+  homework set with a hidden-test file in solutions/hidden_tests/ (found, not listed);
 * the faulty submissions of tests/fixtures/submissions/hw01/ (named by what they get wrong)
   each get exactly the expected points and notes -- an exception, an endless loop (in a cell
   and in a graded function), a kernel that dies, malformed JSON, deleted variables, answers of
@@ -139,15 +139,30 @@ def test_score_table_layout(fixture_run):
     assert (fixture_run["out"] / "histogram.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
-HOMEWORK_FILES = {
-    "hw01": "hw01_reparametrization.ipynb",
-    "hw02": "hw02_beta_constraints.ipynb",
-    "hw03": "hw03_g1_knot_bezier_splines.ipynb",
-    "hw04": "hw04_beta_splines.ipynb",
-}
+def _homework_files() -> dict[str, str | dict[str, list[str]]]:
+    """hwNN -> notebook name, for every hidden-test file ``solutions/hidden_tests/hwNN.py``.
+
+    Derived from the files, so a new homework is graded here without registering it.
+    """
+    files = {}
+    for hidden in sorted(HIDDEN.glob("hw*.py")):
+        hw = hidden.stem
+        names = {
+            folder: sorted(p.name for p in (ROOT / folder).glob(f"{hw}_*.ipynb"))
+            for folder in ("exercises", "solutions")
+        }
+        one = names["solutions"] == names["exercises"] and len(names["solutions"]) == 1
+        files[hw] = names["solutions"][0] if one else names  # a dict: reported by the test
+    return files
+
+
+HOMEWORK_FILES = _homework_files()
 
 
 def test_solutions_full_marks_blank_exercises_zero():
+    assert len(HOMEWORK_FILES) >= 4, HOMEWORK_FILES
+    bad = {hw: n for hw, n in HOMEWORK_FILES.items() if not isinstance(n, str)}
+    assert not bad, f"each hidden test needs one exercises/ and one solutions/ notebook hwNN_*.ipynb: {bad}"
     jobs = []
     for hw, name in HOMEWORK_FILES.items():
         tests = grade.HiddenTests.load(HIDDEN / f"{hw}.py")

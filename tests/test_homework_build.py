@@ -8,8 +8,10 @@
   share with the feedback checks, which hold no mathematics): their expected values must be
   independent of the code the solution notebooks call; they take the ``qN(student)`` form and
   never parse student text (no sympify / parse_expr / eval);
-* every notebook has a title, a how-to, a Preparations cell, a check cell per question and a
-  final check-all cell.
+* every notebook has a title, a how-to, a Preparations cell setting ``HOMEWORK``, a check cell
+  per question, a check-all cell as its last code cell, and ends with the "Hand in" section;
+* one source, one checks module and one hidden-test file per homework (the list of homework is
+  derived from the files: ``course_lib.checks.HOMEWORKS``).
 """
 
 from __future__ import annotations
@@ -42,8 +44,21 @@ HIDDEN = sorted((ROOT / "solutions" / "hidden_tests").glob("hw*.py"))
 
 
 def test_one_source_per_homework():
-    assert [s.stem[:4] for s in SOURCES] == list(HOMEWORKS)
-    assert [h.stem for h in HIDDEN] == list(HOMEWORKS)
+    """Each homework hwNN has exactly one source, one checks module and one hidden-test file.
+
+    ``HOMEWORKS`` is derived from the modules ``course_lib/checks/hwNN.py``; the other two lists
+    from the files, so nothing is registered by hand (``tools/new_homework.py`` writes all three).
+    """
+    sources = [s.stem[:4] for s in SOURCES]
+    assert sources == list(HOMEWORKS), (
+        f"tools/homework_src/ has sources for {sources}, course_lib/checks/ has modules for "
+        f"{list(HOMEWORKS)}: one source hwNN_<name>.py and one checks module hwNN.py per homework"
+    )
+    hidden = [h.stem for h in HIDDEN]
+    assert hidden == list(HOMEWORKS), (
+        f"solutions/hidden_tests/ has {hidden}, course_lib/checks/ has {list(HOMEWORKS)}: "
+        "one hidden-test file hwNN.py per homework"
+    )
 
 
 @pytest.mark.parametrize("source", SOURCES, ids=lambda p: p.stem)
@@ -152,11 +167,14 @@ def test_notebook_layout(source, version):
     for qid in questions(hw):
         name = registry()[qid].answer_name
         assert any(t.strip() == f'check("{qid}", {name})' for t in text), f"no check cell for {qid}"
-    # the last code cell checks everything; the notebook ends with how to hand it in
-    assert "check_all(globals(), HOMEWORK)" in text[-2]
+    assert f'HOMEWORK = "{hw}"' in text[2], "the Preparations cell must set HOMEWORK"
+    code = [t for c, t in zip(cells, text, strict=True) if c["cell_type"] == "code"]
+    assert "check_all(globals(), HOMEWORK)" in code[-1], "the last code cell must check everything"
     if version == "solution":
-        assert "assert report.all_passed" in text[-2]
-    assert text[-1].startswith("## Hand in") and f"make submit HW={hw}" in text[-1]
+        assert "assert report.all_passed" in code[-1]
+    # the notebook ends with how to hand it in (course_lib.submit)
+    assert cells[-1]["cell_type"] == "markdown" and text[-1].startswith("## Hand in"), text[-1][:60]
+    assert f"make submit HW={hw}" in text[-1] and f'submit("{source.stem}.ipynb"' in text[-1]
     for c in cells:
         if c["cell_type"] == "code":
             assert c["outputs"] == [] and c["execution_count"] is None

@@ -64,6 +64,8 @@ API
 from __future__ import annotations
 
 import importlib
+import pkgutil
+import re
 from collections.abc import Mapping, Sequence
 
 import numpy as np
@@ -94,8 +96,16 @@ __all__ = [
     "quiz",
 ]
 
-#: The homework sets whose questions are registered here (module course_lib.checks.<name>).
-HOMEWORKS = ("hw01", "hw02", "hw03", "hw04")
+
+def _homework_modules() -> tuple[str, ...]:
+    """The ``hwNN`` modules of this package, sorted: one per homework set."""
+    names = (m.name for m in pkgutil.iter_modules(__path__))
+    return tuple(sorted(n for n in names if re.fullmatch(r"hw\d\d", n)))
+
+
+#: The homework sets whose questions are registered here: one module ``course_lib.checks.hwNN``
+#: each, found on disk (a new ``hwNN.py``, e.g. from ``tools/new_homework.py``, needs no entry).
+HOMEWORKS = _homework_modules()
 
 
 def _load(homework: str) -> None:

@@ -146,8 +146,14 @@ WRONG = {
 
 def test_every_homework_question_is_covered_here():
     registered = [q for hw in checks.HOMEWORKS for q in questions(hw)]
-    assert sorted(registered) == ALL_IDS
-    assert all(5 <= len(questions(hw)) <= 8 for hw in checks.HOMEWORKS)
+    missing = sorted(set(registered) - set(ALL_IDS))
+    assert not missing, (
+        f"no right answer in RIGHT (tests/unit/test_checks.py) for {missing}: add one per "
+        "question, derived by hand (CONTRIBUTING.md, 'Homework: the rules the tests enforce')"
+    )
+    assert sorted(registered) == ALL_IDS, f"RIGHT has unregistered ids {sorted(set(ALL_IDS) - set(registered))}"
+    sizes = {hw: len(questions(hw)) for hw in checks.HOMEWORKS}
+    assert all(5 <= n <= 8 for n in sizes.values()), f"a homework has 5 to 8 questions: {sizes}"
 
 
 @pytest.mark.parametrize("qid", ALL_IDS)
