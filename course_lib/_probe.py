@@ -33,17 +33,49 @@ import math
 import sys
 from typing import Any
 
+import numpy as np
+
 MAX_ELEMENTS = 200_000
 MAX_DEPTH = 8
 MAX_STRING = 20_000
 MAX_INT_BITS = 256
 MAX_POINTS = 64
+MAX_DECODE_DEPTH = 10
 
-__all__ = ["Unsupported", "decode_argument", "encode", "handle", "serve"]
+__all__ = [
+    "FunctionMarker",
+    "Malformed",
+    "SymbolicText",
+    "Unsupported",
+    "decode",
+    "decode_argument",
+    "decode_number",
+    "encode",
+    "handle",
+    "serve",
+]
 
 
 class Unsupported(Exception):
     """The value cannot be sent as plain data."""
+
+
+class Malformed(ValueError):
+    """Encoded data that no encoder of ours wrote (the grader treats it as a bad answer)."""
+
+
+class SymbolicText(str):
+    """A symbolic answer's text, for messages only: never parse it (use an ``expr`` request)."""
+
+
+class FunctionMarker:
+    """A function found where data was expected (the grader binds it to the student's function)."""
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+
+    def __call__(self, *args: Any, **kwargs: Any) -> Any:
+        raise TypeError("a function inside an answer cannot be called")
 
 
 class _Budget:
@@ -225,7 +257,9 @@ def _evaluate_expression(value: Any, symbols: list, points: list) -> dict:
 
     expr = _as_sympy(value)
     if not isinstance(expr, sp.Expr) or getattr(expr, "is_Matrix", False):
-        raise Unsupported(f"a symbolic answer must be a single expression, not a {type(expr).__name__}")
+        raise Unsupported(
+            f"a symbolic answer must be a single expression, not a {type(expr).__name__}"
+        )
     free = sorted({s.name for s in expr.free_symbols})
     values = None
     if set(free) <= set(symbols):
@@ -301,3 +335,108 @@ def serve(request_json: str, namespace: dict, out_path: str) -> None:
         )
     with open(out_path, "w", encoding="utf-8") as fh:
         fh.write(text)
+
+
+# ---------------------------------------------------------------- decoding (the grader's side)
+
+
+def _decode_float(tag: Any) -> float:
+    if tag == "nan":
+        return math.nan
+    if tag == "inf":
+        return math.inf
+    if tag == "-inf":
+        return -math.inf
+    raise Malformed("malformed answer (bad float tag)")
+
+
+def decode_number(obj: Any) -> Any:
+    if isinstance(obj, bool) or obj is None:
+        return obj
+    if isinstance(obj, (int, float)):
+        return obj
+    if isinstance(obj, dict) and set(obj) == {"__float__"}:
+        return _decode_float(obj["__float__"])
+    if isinstance(obj, dict) and set(obj) == {"__complex__"}:
+        re_im = obj["__complex__"]
+        if not (isinstance(re_im, list) and len(re_im) == 2):
+            raise Malformed("malformed answer (bad complex)")
+        re, im = (decode_number(x) for x in re_im)
+        if not all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in (re, im)):
+            raise Malformed("malformed answer (bad complex)")
+        return complex(re, im)
+    raise Malformed("malformed answer (not a number)")
+
+
+def _nested_shape(data: Any, shape: list[int]) -> bool:
+    if not shape:
+        return not isinstance(data, list)
+    return (
+        isinstance(data, list)
+        and len(data) == shape[0]
+        and all(_nested_shape(d, shape[1:]) for d in data)
+    )
+
+
+def _decode_array(obj: dict, depth: int) -> np.ndarray:
+    if set(obj) != {"__ndarray__", "shape", "kind"}:
+        raise Malformed("malformed answer (bad array)")
+    shape, kind, data = obj["shape"], obj["kind"], obj["__ndarray__"]
+    if not (isinstance(shape, list) and all(isinstance(n, int) and n >= 0 for n in shape)):
+        raise Malformed("malformed answer (bad array shape)")
+    if len(shape) > MAX_DECODE_DEPTH or not _nested_shape(data, shape):
+        raise Malformed("malformed answer (array data does not match its shape)")
+    flat: list = []
+
+    def walk(d):
+        if isinstance(d, list):
+            for x in d:
+                walk(x)
+        else:
+            flat.append(d)
+
+    walk(data)
+    if kind == "O":
+        items = [decode(x, depth + 1) for x in flat]
+        arr = np.empty(len(items), dtype=object)
+        arr[:] = items
+        return arr.reshape(shape)
+    values = [decode_number(x) for x in flat]
+    dtypes = {"b": bool, "i": np.int64, "u": np.uint64, "f": float, "c": complex}
+    if kind not in dtypes:
+        raise Malformed("malformed answer (bad array kind)")
+    if kind in "iu" and any(isinstance(v, (float, complex)) for v in values):
+        raise Malformed("malformed answer (bad integer array)")
+    try:
+        return np.array(values, dtype=dtypes[kind]).reshape(shape)
+    except (OverflowError, ValueError, TypeError) as exc:
+        raise Malformed(f"malformed answer ({exc})") from None
+
+
+def decode(obj: Any, depth: int = 0) -> Any:
+    """Validate and decode one encoded value (untrusted JSON data); raise :class:`Malformed`.
+
+    The grader decodes every answer with this, and ``course_lib.answers.plain`` decodes the
+    checks' own encoding with it too, so both see exactly the same plain data.
+    """
+    if depth > MAX_DECODE_DEPTH:
+        raise Malformed("malformed answer (nested too deeply)")
+    if obj is None or isinstance(obj, (bool, int, float, str)):
+        if isinstance(obj, float) and not math.isfinite(obj):
+            raise Malformed("malformed answer (bare non-finite number)")
+        return obj
+    if isinstance(obj, list):
+        return [decode(x, depth + 1) for x in obj]
+    if isinstance(obj, dict):
+        keys = set(obj)
+        if keys in ({"__float__"}, {"__complex__"}):
+            return decode_number(obj)
+        if "__ndarray__" in keys:
+            return _decode_array(obj, depth)
+        if keys == {"__dict__"} and isinstance(obj["__dict__"], dict):
+            return {str(k): decode(v, depth + 1) for k, v in obj["__dict__"].items()}
+        if keys == {"__callable__"}:
+            return FunctionMarker(str(obj["__callable__"])[:100])
+        if keys == {"__sympy__"} and isinstance(obj["__sympy__"], str):
+            return SymbolicText(obj["__sympy__"])
+    raise Malformed("malformed answer (unknown data)")

@@ -46,6 +46,9 @@ from typing import Any
 
 import numpy as np
 
+from course_lib import _probe
+from course_lib._probe import FunctionMarker, SymbolicText
+
 __all__ = [
     "AnswerError",
     "FunctionMarker",
@@ -77,20 +80,6 @@ class AnswerError(AssertionError):
         self.unanswered = unanswered
 
 
-class SymbolicText(str):
-    """The text of a symbolic answer, for messages only: never parse it (use :func:`evaluate`)."""
-
-
-class FunctionMarker:
-    """A function found where data was expected (what :func:`plain` makes of a callable)."""
-
-    def __init__(self, name: str) -> None:
-        self.name = name
-
-    def __call__(self, *args: Any, **kwargs: Any) -> Any:
-        raise TypeError("a function inside an answer cannot be called")
-
-
 NOT_ANSWERED = "not answered yet (replace the ... by your answer)."
 
 
@@ -102,8 +91,8 @@ def is_unanswered(answer: object) -> bool:
 
 
 def _is_symbolic(value: object) -> bool:
-    # the grader's protocol.SymbolicText and ours: a str subclass never comes from a student
-    return isinstance(value, str) and type(value).__name__ == "SymbolicText"
+    # decoded data holds no str subclass but this one: a student's object never arrives as is
+    return isinstance(value, SymbolicText)
 
 
 def _is_function(value: object) -> bool:
@@ -137,44 +126,6 @@ def describe(value: object) -> str:
 # ----------------------------------------------------------------- live object -> plain data
 
 
-def _decode(obj: Any) -> Any:
-    """Decode the (trusted, same-process) output of ``_probe.encode`` like the grader does."""
-    if isinstance(obj, list):
-        return [_decode(o) for o in obj]
-    if not isinstance(obj, dict):
-        return obj
-    if "__float__" in obj:
-        return float(obj["__float__"])
-    if "__complex__" in obj:
-        re_, im = (_decode(x) for x in obj["__complex__"])
-        return complex(re_, im)
-    if "__ndarray__" in obj:
-        shape, kind = tuple(obj["shape"]), obj["kind"]
-        flat: list = []
-
-        def walk(d):
-            if isinstance(d, list):
-                for x in d:
-                    walk(x)
-            else:
-                flat.append(d)
-
-        walk(obj["__ndarray__"])
-        if kind == "O":
-            arr = np.empty(len(flat), dtype=object)
-            arr[:] = [_decode(x) for x in flat]
-            return arr.reshape(shape)
-        dtypes = {"b": bool, "i": np.int64, "u": np.uint64, "f": float, "c": complex}
-        return np.array([_decode(x) for x in flat], dtype=dtypes[kind]).reshape(shape)
-    if "__dict__" in obj:
-        return {k: _decode(v) for k, v in obj["__dict__"].items()}
-    if "__callable__" in obj:
-        return FunctionMarker(str(obj["__callable__"]))
-    if "__sympy__" in obj:
-        return SymbolicText(obj["__sympy__"])
-    raise AnswerError("the answer could not be read")
-
-
 def plain(value: object, name: str = "your answer") -> Any:
     """``value`` as the grader receives it: the sandbox's encoding, decoded.
 
@@ -185,8 +136,6 @@ def plain(value: object, name: str = "your answer") -> Any:
     """
     if is_unanswered(value):
         raise AnswerError(NOT_ANSWERED, unanswered=True)
-    from course_lib import _probe
-
     try:
         encoded = _probe.encode(value)
         text = json.dumps(encoded, allow_nan=False)
@@ -194,7 +143,10 @@ def plain(value: object, name: str = "your answer") -> Any:
         raise AnswerError(f"{name}: {exc} -- use numbers, lists or numpy arrays.") from None
     except Exception as exc:
         raise AnswerError(f"{name} cannot be read as data ({type(exc).__name__}).") from None
-    return _decode(json.loads(text))
+    try:
+        return _probe.decode(json.loads(text))  # the grader's own (strict) decoder
+    except _probe.Malformed as exc:
+        raise AnswerError(f"{name} cannot be read as data ({exc}).") from None
 
 
 # ----------------------------------------------------------------- numbers and arrays
@@ -224,7 +176,9 @@ def _real_array(value: object, name: str, what: str) -> np.ndarray:
                     check(y)
             elif x.dtype.kind not in "iuf":
                 raise AnswerError(f"{name} contains {describe(x)}; real numbers are expected.")
-        elif isinstance(x, (bool, np.bool_)) or not isinstance(x, (int, float, np.integer, np.floating)):
+        elif isinstance(x, (bool, np.bool_)) or not isinstance(
+            x, (int, float, np.integer, np.floating)
+        ):
             if isinstance(x, complex) or _is_symbolic(x):
                 raise AnswerError(
                     f"{name} contains {describe(x)}; real numbers are expected "
@@ -234,9 +188,7 @@ def _real_array(value: object, name: str, what: str) -> np.ndarray:
 
     check(value)
     try:
-        return np.asarray(
-            value.tolist() if isinstance(value, np.ndarray) else value, dtype=float
-        )
+        return np.asarray(value.tolist() if isinstance(value, np.ndarray) else value, dtype=float)
     except (TypeError, ValueError):
         raise AnswerError(
             f"{name} ({describe(value)}) cannot be read as an array of numbers "
@@ -266,14 +218,18 @@ def number(value: object, name: str = "your answer", hint: str = "") -> float:
             "substitute the values or call float()."
         )
     if isinstance(value, str):
-        raise AnswerError(f"a number is expected, but {name} is {describe(value)}; write it without quotes.")
+        raise AnswerError(
+            f"a number is expected, but {name} is {describe(value)}; write it without quotes."
+        )
     if isinstance(value, complex):
         raise AnswerError(f"a real number is expected, but {name} is complex.")
     if isinstance(value, (list, tuple, np.ndarray)):
         arr = _real_array(value, name, "a number")
         if arr.size != 1:
             more = f" ({hint})" if hint else ""
-            raise AnswerError(f"a single number is expected, but {name} has {arr.size} entries{more}.")
+            raise AnswerError(
+                f"a single number is expected, but {name} has {arr.size} entries{more}."
+            )
         value = float(arr.reshape(()))
     if not isinstance(value, (int, float, np.integer, np.floating)):
         raise AnswerError(f"a number is expected here, but {name} is {describe(value)}.")
@@ -296,8 +252,10 @@ def array(
     if shape == ():
         return np.array(number(value, name))
     _not_missing(value, name)
-    if isinstance(value, (str, dict, bool, np.bool_, complex, int, float)) or _is_function(value) or isinstance(
-        value, FunctionMarker
+    if (
+        isinstance(value, (str, dict, bool, np.bool_, complex, int, float))
+        or _is_function(value)
+        or isinstance(value, FunctionMarker)
     ):
         raise AnswerError(f"{what} of shape {shape} is expected, but {name} is {describe(value)}.")
     arr = _real_array(value, name, what)
@@ -306,8 +264,14 @@ def array(
         if len(shape) == 1 and arr.size == n and sum(k != 1 for k in arr.shape) <= 1:
             arr = arr.reshape(shape)  # a column or row vector
         else:
-            hint = f" (it has the right number of entries: reshape it to {shape})" if arr.size == n > 0 else ""
-            raise AnswerError(f"{what} of shape {shape} is expected; {name} has shape {arr.shape}{hint}.")
+            hint = (
+                f" (it has the right number of entries: reshape it to {shape})"
+                if arr.size == n > 0
+                else ""
+            )
+            raise AnswerError(
+                f"{what} of shape {shape} is expected; {name} has shape {arr.shape}{hint}."
+            )
     _finite(arr, name)
     return arr
 
@@ -345,7 +309,9 @@ def choice(value: object, options: str, name: str = "your answer", *, single: bo
     raises :class:`AnswerError` with a format hint; so do several letters when ``single``.
     """
     opts = options.lower()
-    example = f"'{opts[1] if len(opts) > 1 else opts[0]}'" + ("" if single else f" or '{opts[0]}, {opts[-1]}'")
+    example = f"'{opts[1] if len(opts) > 1 else opts[0]}'" + (
+        "" if single else f" or '{opts[0]}, {opts[-1]}'"
+    )
     _not_missing(value, name)
     if isinstance(value, str):
         parts = [str(value)]
@@ -376,7 +342,10 @@ def choice(value: object, options: str, name: str = "your answer", *, single: bo
 
 
 def _decode_number(v: Any) -> complex:
-    z = _decode(v)
+    try:
+        z = _probe.decode_number(v)
+    except _probe.Malformed:
+        z = None
     if isinstance(z, bool) or not isinstance(z, (int, float, complex)):
         raise AnswerError("the expression's values could not be read")
     return complex(z)
@@ -419,15 +388,15 @@ def expression_matches(
     """
     stray = sorted(set(free) - set(symbols))
     if stray or values is None:
-        raise AnswerError(f"use only the symbols {', '.join(symbols)}; {name} contains {', '.join(stray) or '?'}.")
+        raise AnswerError(
+            f"use only the symbols {', '.join(symbols)}; {name} contains {', '.join(stray) or '?'}."
+        )
     vals = [complex(v) for v in values]
     if len(vals) != len(expected):
         raise AnswerError("the expression's values could not be read")
     if not all(math.isfinite(v.real) and math.isfinite(v.imag) for v in vals):
         raise AnswerError(f"{name} is not finite at some admissible values -- a division by zero?")
-    return all(
-        abs(v - e) <= rtol * max(abs(e), 1.0) for v, e in zip(vals, expected, strict=True)
-    )
+    return all(abs(v - e) <= rtol * max(abs(e), 1.0) for v, e in zip(vals, expected, strict=True))
 
 
 # ----------------------------------------------------------------- comparing and scoring

@@ -36,6 +36,8 @@ from typing import Any
 
 import numpy as np
 
+from course_lib import _probe
+
 MAX_RESPONSE_BYTES = 4_000_000
 MAX_DEPTH = 10
 
@@ -88,111 +90,19 @@ class ChannelBroken(Exception):
 # ---------------------------------------------------------------- decoding untrusted data
 
 
-def _decode_float(tag: Any) -> float:
-    if tag == "nan":
-        return math.nan
-    if tag == "inf":
-        return math.inf
-    if tag == "-inf":
-        return -math.inf
-    raise BadAnswer("malformed answer (bad float tag)")
+def decode_value(obj: Any, depth: int = 0, student: Student | None = None) -> Any:
+    """Validate and decode one encoded value (``course_lib._probe.decode``, strict)."""
+    try:
+        return _probe.decode(obj, depth)
+    except _probe.Malformed as exc:
+        raise BadAnswer(str(exc)) from None
 
 
 def _decode_scalar_number(obj: Any) -> Any:
-    if isinstance(obj, bool) or obj is None:
-        return obj
-    if isinstance(obj, (int, float)):
-        return obj
-    if isinstance(obj, dict) and set(obj) == {"__float__"}:
-        return _decode_float(obj["__float__"])
-    if isinstance(obj, dict) and set(obj) == {"__complex__"}:
-        re_im = obj["__complex__"]
-        if not (isinstance(re_im, list) and len(re_im) == 2):
-            raise BadAnswer("malformed answer (bad complex)")
-        re, im = (_decode_scalar_number(x) for x in re_im)
-        if not all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in (re, im)):
-            raise BadAnswer("malformed answer (bad complex)")
-        return complex(re, im)
-    raise BadAnswer("malformed answer (not a number)")
-
-
-def _nested_shape(data: Any, shape: list[int]) -> bool:
-    if not shape:
-        return not isinstance(data, list)
-    return (
-        isinstance(data, list)
-        and len(data) == shape[0]
-        and all(_nested_shape(d, shape[1:]) for d in data)
-    )
-
-
-def _decode_array(obj: dict, depth: int) -> np.ndarray:
-    if set(obj) != {"__ndarray__", "shape", "kind"}:
-        raise BadAnswer("malformed answer (bad array)")
-    shape, kind, data = obj["shape"], obj["kind"], obj["__ndarray__"]
-    if not (isinstance(shape, list) and all(isinstance(n, int) and n >= 0 for n in shape)):
-        raise BadAnswer("malformed answer (bad array shape)")
-    if len(shape) > MAX_DEPTH or not _nested_shape(data, shape):
-        raise BadAnswer("malformed answer (array data does not match its shape)")
-    flat: list = []
-
-    def walk(d):
-        if isinstance(d, list):
-            for x in d:
-                walk(x)
-        else:
-            flat.append(d)
-
-    walk(data)
-    if kind == "O":
-        items = [decode_value(x, depth + 1) for x in flat]
-        arr = np.empty(len(items), dtype=object)
-        arr[:] = items
-        return arr.reshape(shape)
-    values = [_decode_scalar_number(x) for x in flat]
-    dtypes = {"b": bool, "i": np.int64, "u": np.uint64, "f": float, "c": complex}
-    if kind not in dtypes:
-        raise BadAnswer("malformed answer (bad array kind)")
-    if kind in "iu" and any(isinstance(v, (float, complex)) for v in values):
-        raise BadAnswer("malformed answer (bad integer array)")
     try:
-        return np.array(values, dtype=dtypes[kind]).reshape(shape)
-    except (OverflowError, ValueError, TypeError) as exc:
-        raise BadAnswer(f"malformed answer ({exc})") from None
-
-
-def decode_value(obj: Any, depth: int = 0, student: Student | None = None) -> Any:
-    """Validate and decode one encoded value (see ``course_lib._probe``)."""
-    if depth > MAX_DEPTH:
-        raise BadAnswer("malformed answer (nested too deeply)")
-    if obj is None or isinstance(obj, (bool, int, float, str)):
-        if isinstance(obj, float) and not math.isfinite(obj):
-            raise BadAnswer("malformed answer (bare non-finite number)")
-        return obj
-    if isinstance(obj, list):
-        return [decode_value(x, depth + 1, student) for x in obj]
-    if isinstance(obj, dict):
-        keys = set(obj)
-        if keys in ({"__float__"}, {"__complex__"}):
-            return _decode_scalar_number(obj)
-        if "__ndarray__" in keys:
-            return _decode_array(obj, depth)
-        if keys == {"__dict__"} and isinstance(obj["__dict__"], dict):
-            return {str(k): decode_value(v, depth + 1, student) for k, v in obj["__dict__"].items()}
-        if keys == {"__callable__"}:
-            return _CallableMarker(str(obj["__callable__"])[:100])
-        if keys == {"__sympy__"} and isinstance(obj["__sympy__"], str):
-            return SymbolicText(obj["__sympy__"])
-    raise BadAnswer("malformed answer (unknown data)")
-
-
-class SymbolicText(str):
-    """A symbolic answer's text, for display only: never parse it (use ``expression``)."""
-
-
-class _CallableMarker:
-    def __init__(self, name: str) -> None:
-        self.name = name
+        return _probe.decode_number(obj)
+    except _probe.Malformed as exc:
+        raise BadAnswer(str(exc)) from None
 
 
 def parse_response(text: str | bytes | None) -> Any:
@@ -300,7 +210,7 @@ class Student:
         return self._bind(value)
 
     def _bind(self, value: Any) -> Any:
-        if isinstance(value, _CallableMarker):
+        if isinstance(value, _probe.FunctionMarker):
             return RemoteFunction(self, value.name)
         return value
 
