@@ -20,18 +20,16 @@ nb_merge_streams = True
 nb_output_stderr = "remove-warn"
 myst_enable_extensions = ["dollarmath", "amsmath", "colon_fence"]
 myst_heading_anchors = 3
+myst_dmath_double_inline = True
+myst_update_mathjax = False  # its MathJax 3 settings; MathJax 2 is configured below  # $$...$$ inside a paragraph, as JupyterLab renders it
 suppress_warnings = ["mystnb.unknown_mime_type", "myst.header"]
 
 # ---- math: MathJax 2.7, local (relative to _static/)
 mathjax_path = "mathjax/MathJax.js?config=TeX-AMS-MML_HTMLorMML-full"
 mathjax2_config = {
-    "tex2jax": {
-        "inlineMath": [["\\(", "\\)"], ["$", "$"]],
-        "displayMath": [["\\[", "\\]"], ["$$", "$$"]],
-        "processEscapes": True,
-        "processClass": "math|output_latex|output_area|cell_output|tex2jax_process",
-        "ignoreClass": "tex2jax_ignore|highlight|output_text",
-    },
+    # MyST and MyST-NB write all math (prose and sympy's LaTeX outputs) as \(..\) / \[..\];
+    # a stray "$" is left alone (and caught by tests/test_site.py).
+    "tex2jax": {"inlineMath": [["\\(", "\\)"]], "displayMath": [["\\[", "\\]"]]},
     "HTML-CSS": {
         "availableFonts": ["STIX-Web"],
         "preferredFont": "STIX-Web",

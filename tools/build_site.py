@@ -322,7 +322,7 @@ def index_page(items: list[tuple[Path, str]]) -> str:
     readme = (ROOT / "README.md").read_text()
     intro = readme.split("\n## ", 1)[0].split("\n", 1)[1].strip()
     intro = re.sub(r"\[([^\]]+)\]\((?!https?:)[^)]+\)", r"\1", intro)
-    intro = re.sub(r"\(in `[^`]*`\)", "", intro)
+    intro = re.sub(r" \(in `[^`]*`\)", "", intro)
     lectures = "\n".join(d for _, d in items if d.startswith("lectures/"))
     homework = "\n".join(d for _, d in items if d.startswith("homework/"))
     parts = [
@@ -397,6 +397,8 @@ def build(only: list[str] | None, out: Path, jobs: int, use_cache: bool) -> Path
     cmd += ["-d", str(BUILD / "site-doctrees"), str(STAGE), str(out)]
     print(" ".join(cmd))
     subprocess.run(cmd, check=True, cwd=ROOT)
+    for junk in (out / "_static").glob("*macros.html"):  # the theme's Jinja macros, not pages
+        junk.unlink()
     (out / ".nojekyll").touch()  # GitHub Pages: serve _static/ as is
     print(
         f"site: {out.relative_to(ROOT) if out.is_relative_to(ROOT) else out}/index.html "
