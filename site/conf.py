@@ -59,3 +59,8 @@ html_theme_options = {
     "navigation_with_keys": False,
     "pygments_light_style": "default",
 }
+
+
+def setup(app):
+    # MathJax on every page: the navigation shows lecture titles with math on all of them
+    app.set_html_assets_policy("always")

@@ -40,7 +40,11 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 ARTIFACTS = ROOT / "test-artifacts" / "site"
-LECTURE = "01_reparametrization"  # the lecture page opened in the browser
+LECTURE = "01_reparametrization"  # the lecture page screenshot in the browser
+# the pages opened in the browser (3 s each): name -> path in the site.  Every page is
+# checked for raw TeX without a browser (test_no_raw_tex_on_any_page).
+PAGES = {"index": "index.html", "course": "course.html", LECTURE: f"lectures/{LECTURE}.html"}
+PAGES |= {p.stem: f"homework/{p.stem}.html" for p in sorted((ROOT / "exercises").glob("hw*.ipynb"))[:1]}
 
 
 def _load(name: str):
@@ -106,13 +110,19 @@ def _in_thread(fn, *args):
 
 
 # ------------------------------------------------------------------------ HTML parsing
+_VOID = {"area", "base", "br", "col", "embed", "hr", "img", "input", "link", "meta", "source",
+         "track", "wbr"}
+
+
 class _Links(HTMLParser):
     def __init__(self) -> None:
         super().__init__(convert_charrefs=True)
+        self.prose: list[str] = []  # text outside code, math and outputs
         self.ids: set[str] = set()
         self.refs: list[tuple[str, str, str]] = []  # (tag, attribute, url)
         self.text: list[str] = []
         self._skip = 0
+        self._stack: list[bool] = []  # per open element: is it (inside) code or math?
 
     def handle_starttag(self, tag, attrs):
         a = dict(attrs)
@@ -126,14 +136,23 @@ class _Links(HTMLParser):
                 self.refs.append((f"{tag}:{rel}" if tag == "link" else tag, attr, a[attr]))
         if tag in ("script", "style"):
             self._skip += 1
+        if tag not in _VOID:
+            cls = a.get("class") or ""
+            code = tag in ("pre", "code", "script", "style", "kbd", "samp", "title") or bool(
+                re.search(r"\bmath\b|highlight|output_text|output_stream|text_html", cls))
+            self._stack.append(code or (bool(self._stack) and self._stack[-1]))
 
     def handle_endtag(self, tag):
         if tag in ("script", "style") and self._skip:
             self._skip -= 1
+        if tag not in _VOID and self._stack:
+            self._stack.pop()
 
     def handle_data(self, data):
         if not self._skip:
             self.text.append(data)
+        if not (self._stack and self._stack[-1]):
+            self.prose.append(data)
 
 
 def _parse(path: Path) -> _Links:
@@ -254,9 +273,10 @@ def _browse(site: Path, chromium: str) -> dict:
             errors: list[str] = []
             page.on("pageerror", lambda e: errors.append(str(e)))
             page.on("response", lambda r: r.status >= 400 and errors.append(f"{r.status} {r.url}"))
-            for name, rel in (("index", "index.html"), ("lecture", f"lectures/{LECTURE}.html")):
+            for name, rel in PAGES.items():
                 build_handouts.open_ready(page, f"{base}/{rel}")
-                page.screenshot(path=str(ARTIFACTS / f"{name}.png"))
+                if name in ("index", LECTURE):
+                    page.screenshot(path=str(ARTIFACTS / f"{name}.png"))
                 result[name] = page.evaluate(
                     """() => {
                       const art = document.querySelector('article') || document.body;
@@ -277,6 +297,7 @@ def _browse(site: Path, chromium: str) -> dict:
                     }"""
                 )
             # a screenshot at a figure, further down the lecture
+            build_handouts.open_ready(page, f"{base}/{PAGES[LECTURE]}")
             figure = page.locator("div.cell_output img").nth(1)
             figure.scroll_into_view_if_needed()
             page.screenshot(path=str(ARTIFACTS / "lecture-figure.png"))
@@ -294,12 +315,24 @@ def browsed(site, chromium) -> dict:
     return out
 
 
+@pytest.mark.slow
+def test_no_raw_tex_on_any_page(site):
+    """MyST turned every $…$ of the prose into math: none is left as text (the browser test
+    then sees MathJax typeset it).  The tab title (``<title>``) keeps a title's TeX source:
+    Sphinx writes it as plain text."""
+    found = []
+    for page in _html_files(site):
+        prose = " ".join(_parse(page).prose)
+        found += [f"{page.relative_to(site)}: {m!r}" for m in RAW_TEX.findall(prose)]
+    assert not found, "\n".join(found[:20])
+
+
 RAW_TEX = re.compile(r"\$[^$\n]{1,200}\$|\\\(|\\\)|\\\[|\\\]|\\begin\{|\\frac|\\mathbf")
 
 
 @pytest.mark.slow
 @pytest.mark.browser
-@pytest.mark.parametrize("name", ["index", "lecture"])
+@pytest.mark.parametrize("name", list(PAGES))
 def test_pages_render_math_and_images_offline(browsed, name):
     r = browsed[name]
     assert not browsed["blocked"], f"asked the network for {browsed['blocked']}"
@@ -311,9 +344,10 @@ def test_pages_render_math_and_images_offline(browsed, name):
     assert r["mathErrors"] == 0, r
     assert all(complete and width > 0 for _, complete, width in r["images"]), [
         i for i in r["images"] if not (i[1] and i[2] > 0)]
-    if name == "lecture":
-        assert r["math"] >= 20 and len(r["images"]) >= 5, r
-    assert (ARTIFACTS / f"{name}.png").stat().st_size > 10_000
+    if name == LECTURE:
+        assert r["math"] >= 20 and len(r["images"]) >= 3, r
+    if name in ("index", LECTURE):
+        assert (ARTIFACTS / f"{name}.png").stat().st_size > 10_000
 
 
 # ----------------------------------------------------------------------------- handouts
@@ -496,6 +530,11 @@ def test_demos_get_a_note_on_running_live_and_links_point_at_pages():
          "and ![pic](fig.png)."},
         _code("%matplotlib widget\nfrom course_lib.widgets import knot_spline_demo", "i"),
         _code("knot_spline_demo()", "k"),
+        _code("%matplotlib widget", "w"),
+        _code("x = 1", "x"),
+        {**_code("plot()", "p"), "outputs": [{"output_type": "display_data", "metadata": {},
+                                             "data": {"image/png": "iVBOR", "text/plain": "F"}}]},
+        _code("plot()", "q"),
     )
     docs = {"notebooks/01_a.ipynb": "lectures/01_a", "notebooks/02_b.ipynb": "lectures/02_b",
             "exercises/hw01_a.ipynb": "homework/hw01_a"}
@@ -505,8 +544,10 @@ def test_demos_get_a_note_on_running_live_and_links_point_at_pages():
     assert "[hw](../homework/hw01_a.ipynb)" in md
     assert "the answers" in md and "solutions" not in md
     assert "[a paper](https://example.org)" in md and "![pic](fig.png)" in md
-    notes = [c["source"] for c in page["cells"] if "Live demo" in "".join(c["source"])]
-    assert len(notes) == 2 and all("voila notebooks/01_a.ipynb" in n for n in notes)
+    notes = [i for i, c in enumerate(page["cells"]) if "Live demo" in "".join(c["source"])]
+    after = [page["cells"][i - 1]["id"] for i in notes]
+    assert after == ["k", "p"], "after each demo, and after the figure `%matplotlib widget` makes live"
+    assert all("voila notebooks/01_a.ipynb" in page["cells"][i]["source"] for i in notes)
     assert len({c["id"] for c in page["cells"]}) == len(page["cells"]), "cell ids are unique"
 
 

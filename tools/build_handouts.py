@@ -3,7 +3,8 @@
 Each lecture page of the website (``build/site/``, built first by ``tools/build_site.py``
 when missing) is printed to ``build/handouts/NN_name.pdf`` by headless Debian Chromium
 (``/usr/bin/chromium``, or ``$COURSE_CHROMIUM``) driven by Playwright; no browser is
-downloaded.  Printing the site rather than converting the notebooks again means the PDF is
+downloaded.  The PDFs are also copied into the site (``build/site/handouts/``), so they are
+published with it.  Printing the site rather than converting the notebooks again means the PDF is
 exactly the page: the same executed outputs and static demo figures, the same MathJax
 (local), the same collapsed evidence cells; the site's print style (``site/_static/
 course.css``) drops the navigation.  A4, page numbers in the footer.
@@ -45,6 +46,10 @@ READY_JS = """() => {
 }"""
 MATH_HOOK_JS = """() => {
   window.__courseMathDone = false;
+  if (!document.querySelector('script[src*="MathJax.js"]')) {  // a page without math
+    window.__courseMathDone = true;
+    return;
+  }
   const wait = () => {
     if (window.MathJax && window.MathJax.Hub && window.MathJax.Hub.Register) {
       // "End": after the start-up typesetting of the whole page (replayed if already past)
@@ -178,6 +183,10 @@ def build(site: Path = SITE, out: Path = OUT, only: list[str] | None = None) -> 
             print(f"  {pdf.relative_to(ROOT) if pdf.is_relative_to(ROOT) else pdf}")
     if blocked:
         raise RuntimeError(f"the pages asked for outside resources: {sorted(set(blocked))}")
+    # published with the site too: <site>/handouts/NN_name.pdf
+    (site / "handouts").mkdir(exist_ok=True)
+    for pdf in written:
+        shutil.copy2(pdf, site / "handouts" / pdf.name)
     print(f"{len(written)} handouts in {time.perf_counter() - t0:.0f} s")
     return written
 

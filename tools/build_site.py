@@ -52,7 +52,8 @@ SOURCES = (("notebooks", "lectures", "[0-9][0-9]_*.ipynb"), ("exercises", "homew
 FORBIDDEN = ("solutions", "homework_src", "hidden_tests")
 BUILD_VERSION = "1"  # bump to invalidate the execution cache
 CELL_TIMEOUT = 180
-DEMO_CALL = re.compile(r"\b\w+_demo\s*\(|^%matplotlib\s+(widget|ipympl)", re.M)
+DEMO_CALL = re.compile(r"\b\w+_demo\s*\(")
+WIDGET_MAGIC = re.compile(r"^%matplotlib\s+(widget|ipympl)\b", re.M)
 #: a cell that checks the live widgets (sliders, canvas) cannot pass with static demos: its
 #: error is dropped and the page says that it runs live (any other error fails the build)
 LIVE_ONLY = re.compile(r"\.controls\b|\.widget\b|\bcanvas\b|ipympl|ipywidgets")
@@ -63,9 +64,9 @@ LIVE_CHECK_NOTE = (
 )
 LIVE_NOTE = (
     "```{{admonition}} Live demo\n:class: tip live-demo\n"
-    "This picture is the demo's static fallback. To move its sliders and drag its points, "
-    "run the notebook live: `make lab` and open `{path}` in JupyterLab, or as an app "
-    "without code cells: `.venv/bin/voila {path}`.\n```"
+    "This picture is static. Live, it is interactive (sliders, draggable points, rotation): "
+    "run `make lab` and open `{path}` in JupyterLab, or show it as an app without code "
+    "cells: `.venv/bin/voila {path}`.\n```"
 )
 
 
@@ -212,6 +213,7 @@ def prepare(nb: dict, repo_path: str, docs: dict[str, str] | None = None) -> dic
     nb = copy.deepcopy(nb)
     docs = docs or {}
     cells = []
+    widget_figure_next = False  # the code cell after `%matplotlib widget` draws a live figure
     for cell in nb["cells"]:
         if cell["cell_type"] == "markdown":
             cell["source"] = rewrite_links("".join(cell["source"]), repo_path, docs)
@@ -234,8 +236,15 @@ def prepare(nb: dict, repo_path: str, docs: dict[str, str] | None = None) -> dic
         cells.append(cell)
         if meta.pop("course_live_only", False):
             cells.append(_markdown(LIVE_CHECK_NOTE, len(cells)))
-        if cell["cell_type"] == "code" and DEMO_CALL.search("".join(cell["source"])):
+        if cell["cell_type"] != "code":
+            continue
+        src = "".join(cell["source"])
+        has_picture = any("image/png" in o.get("data", {}) for o in cell.get("outputs", []))
+        if DEMO_CALL.search(src) or (widget_figure_next and has_picture):
             cells.append(_markdown(LIVE_NOTE.format(path=repo_path), len(cells)))
+            widget_figure_next = False
+        elif WIDGET_MAGIC.search(src):
+            widget_figure_next = True
     nb["cells"] = cells
     return nb
 
