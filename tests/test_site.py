@@ -492,6 +492,62 @@ def test_no_solution_or_hidden_test_in_site_or_handouts(site, handouts):
     assert not found, "\n".join(found[:30])
 
 
+# -------------------------------------------------------------------- evidence cells
+def _collapsed_cells(page: Path) -> dict[str, bool]:
+    """cell id -> is its source collapsed behind a toggle (with its outputs outside)?"""
+    text = page.read_text()
+    out = {}
+    for m in re.finditer(r'<div class="cell ([^"]*)docutils container" id="cell-([\w-]+)">', text):
+        body = text[m.end(): m.end() + 400]
+        out[m.group(2)] = "tag_hide-input" in m.group(1) and body.lstrip().startswith(
+            '<details class="admonition hide above-input">')
+    return out
+
+
+def _hidden_in_lab(cell: dict) -> bool:
+    meta = cell.get("metadata", {})
+    return "evidence" in meta.get("tags", []) or bool(meta.get("jupyter", {}).get("source_hidden"))
+
+
+@pytest.mark.slow
+def test_evidence_cells_are_collapsed_on_the_lecture_pages(site):
+    """Whatever the lectures tag as evidence (or JupyterLab hides) is collapsed on the page,
+    and nothing else is."""
+    for nb in sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb")):
+        cells = [c for c in json.loads(nb.read_text())["cells"] if c["cell_type"] == "code"]
+        collapsed = _collapsed_cells(site / "lectures" / f"{nb.stem}.html")
+        for c in cells:
+            if c.get("id") in collapsed:
+                assert collapsed[c["id"]] == _hidden_in_lab(c), (nb.stem, c["id"])
+
+
+@pytest.mark.slow
+def test_a_tagged_evidence_cell_is_collapsed_with_its_output_visible(tmp_path):
+    """The same on a small notebook of our own, whatever the lectures contain today."""
+    import nbformat
+    from nbformat.v4 import new_code_cell, new_markdown_cell, new_notebook
+
+    nb = new_notebook(metadata={"kernelspec": {"name": "python3", "display_name": "Python 3",
+                                               "language": "python"}})
+    nb.cells = [
+        new_markdown_cell("# Evidence\n\nA claim about $x^2$."),
+        new_code_cell("print('evidence output')\nassert 1 + 1 == 2", id="ev",
+                      metadata={"tags": ["evidence"], "jupyter": {"source_hidden": True}}),
+        new_code_cell("print('hidden in lab')", id="lab", metadata={"jupyter": {"source_hidden": True}}),
+        new_code_cell("print('plain cell')", id="plain"),
+    ]
+    src = tmp_path / "99_evidence.ipynb"
+    nbformat.write(nb, src)
+    out = build_site.build(None, tmp_path / "html", 1, True, items=[(src, "lectures/99_evidence")])
+    page = out / "lectures" / "99_evidence.html"
+    assert _collapsed_cells(page) == {"ev": True, "lab": True, "plain": False}
+    text = page.read_text()
+    assert text.index("</span>evidence output\n") > text.index("</details>"), "the output stays visible"
+    assert "Show code cell source" in text
+    for stale in build_site.CACHE.glob("99_evidence-*.ipynb"):
+        stale.unlink()
+
+
 # ------------------------------------------------------------- fast: page preparation
 def _nb(*cells):
     return {"cells": list(cells), "metadata": {}, "nbformat": 4, "nbformat_minor": 5}

@@ -44,7 +44,6 @@ ROOT = Path(__file__).resolve().parents[1]
 SITE_CONF = ROOT / "site"
 BUILD = ROOT / "build"
 DEFAULT_OUT = BUILD / "site"
-STAGE = BUILD / "site-src"
 CACHE = BUILD / "site-cache"
 
 #: (folder in the repository, folder on the site, glob).  Never solutions/.
@@ -81,6 +80,10 @@ def source_notebooks(only: list[str] | None = None) -> list[tuple[Path, str]]:
             assert not any(part in FORBIDDEN for part in path.relative_to(ROOT).parts)
             out.append((path, f"{target}/{path.stem}"))
     return out
+
+
+def _repo_path(path: Path) -> str:
+    return str(path.relative_to(ROOT)) if path.is_relative_to(ROOT) else path.name
 
 
 def _tree_hash() -> str:
@@ -156,7 +159,7 @@ def execute_all(items: list[tuple[Path, str]], jobs: int, use_cache: bool) -> di
         cached = CACHE / f"{path.stem}-{_notebook_key(nb, tree)}.ipynb"
         done[path] = cached
         if use_cache and cached.exists():
-            print(f"  cached   {path.relative_to(ROOT)}")
+            print(f"  cached   {_repo_path(path)}")
         else:
             todo.append((path, cached))
     if not todo:
@@ -168,7 +171,7 @@ def execute_all(items: list[tuple[Path, str]], jobs: int, use_cache: bool) -> di
         }
         for fut in cf.as_completed(futures):
             p = futures[fut]
-            print(f"  executed {p.relative_to(ROOT)} in {fut.result():.1f} s")
+            print(f"  executed {_repo_path(p)} in {fut.result():.1f} s")
     shutil.rmtree(env["IPYTHONDIR"], ignore_errors=True)
     # drop stale cache entries of these notebooks
     keep = {c.name for c in done.values()}
@@ -374,36 +377,47 @@ def copy_mathjax(dest: Path) -> None:
     shutil.copytree(src, dest, ignore=ignore, dirs_exist_ok=True)
 
 
-def build(only: list[str] | None, out: Path, jobs: int, use_cache: bool) -> Path:
+def build(
+    only: list[str] | None,
+    out: Path,
+    jobs: int,
+    use_cache: bool,
+    items: list[tuple[Path, str]] | None = None,
+) -> Path:
+    """Build the site into ``out``; the Sphinx sources and doctrees go next to it
+    (``<out>-src``, ``<out>-doctrees``).  ``items`` replaces the course's notebooks by other
+    (notebook, document) pairs (tests)."""
     t0 = time.perf_counter()
-    items = source_notebooks(only)
+    items = items if items is not None else source_notebooks(only)
+    stage = out.parent / f"{out.name}-src"
+    doctrees = out.parent / f"{out.name}-doctrees"
     if not items:
         raise SystemExit(f"no notebook matches {only}")
     print(f"executing {len(items)} notebooks (cache: {CACHE.relative_to(ROOT)})")
     executed = execute_all(items, jobs, use_cache)
     t_exec = time.perf_counter() - t0
 
-    if STAGE.exists():
-        shutil.rmtree(STAGE)
-    shutil.copytree(SITE_CONF, STAGE, ignore=shutil.ignore_patterns("kernel_startup.py"))
-    copy_mathjax(STAGE / "_static" / "mathjax")
+    if stage.exists():
+        shutil.rmtree(stage)
+    shutil.copytree(SITE_CONF, stage, ignore=shutil.ignore_patterns("kernel_startup.py"))
+    copy_mathjax(stage / "_static" / "mathjax")
     docs, cell_ids = {}, {}
-    by_path = {str(p.relative_to(ROOT)): d for p, d in items}
+    by_path = {_repo_path(p): d for p, d in items}
     for path, doc in items:
         nb = json.loads(executed[path].read_text())
-        page = prepare(nb, str(path.relative_to(ROOT)), by_path)
-        target = STAGE / f"{doc}.ipynb"
+        page = prepare(nb, _repo_path(path), by_path)
+        target = stage / f"{doc}.ipynb"
         target.parent.mkdir(parents=True, exist_ok=True)
         target.write_text(json.dumps(page, ensure_ascii=False, indent=1))
         docs[path.stem] = doc
         cell_ids[path.stem] = {c.get("id") for c in nb["cells"]}
-    (STAGE / "course.md").write_text(course_page(docs, cell_ids))
-    (STAGE / "index.md").write_text(index_page(items))
+    (stage / "course.md").write_text(course_page(docs, cell_ids))
+    (stage / "index.md").write_text(index_page(items))
 
     if out.exists():
         shutil.rmtree(out)
     cmd = [sys.executable, "-m", "sphinx", "-b", "html", "-q", "-j", str(max(1, jobs))]
-    cmd += ["-d", str(BUILD / "site-doctrees"), str(STAGE), str(out)]
+    cmd += ["-d", str(doctrees), str(stage), str(out)]
     print(" ".join(cmd))
     subprocess.run(cmd, check=True, cwd=ROOT)
     for junk in (out / "_static").glob("*macros.html"):  # the theme's Jinja macros, not pages
