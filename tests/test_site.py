@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import ast
 import concurrent.futures as cf
+import functools
 import html
 import importlib.util
 import json
@@ -173,7 +174,9 @@ def _site_text(site: Path) -> str:
     return "\n".join(parts)
 
 
+@functools.cache
 def _pdf_text(pdf: Path) -> str:
+    """The PDF's text (pypdf; 1-3 s per handout, so read once per session)."""
     from pypdf import PdfReader
 
     return "\n".join(page.extract_text() or "" for page in PdfReader(str(pdf)).pages)
@@ -275,8 +278,7 @@ def _browse(site: Path, chromium: str) -> dict:
             page.on("response", lambda r: r.status >= 400 and errors.append(f"{r.status} {r.url}"))
             for name, rel in PAGES.items():
                 build_handouts.open_ready(page, f"{base}/{rel}")
-                if name in ("index", LECTURE):
-                    page.screenshot(path=str(ARTIFACTS / f"{name}.png"))
+                page.screenshot(path=str(ARTIFACTS / f"{name}.png"))
                 result[name] = page.evaluate(
                     """() => {
                       const art = document.querySelector('article') || document.body;
@@ -301,6 +303,12 @@ def _browse(site: Path, chromium: str) -> dict:
             figure = page.locator("div.cell_output img").nth(1)
             figure.scroll_into_view_if_needed()
             page.screenshot(path=str(ARTIFACTS / "lecture-figure.png"))
+            # full-text search works offline (Sphinx's search index, no server)
+            page.goto(f"{base}/search.html?q=curvature", wait_until="load")
+            page.wait_for_selector("#search-results ul.search li", timeout=30_000)
+            result["search"] = page.eval_on_selector_all(
+                "#search-results ul.search li a", "els => els.map(e => e.getAttribute('href'))")
+            page.screenshot(path=str(ARTIFACTS / "search.png"))
             result["blocked"], result["errors"] = blocked, errors
         finally:
             browser.close()
@@ -327,6 +335,14 @@ def test_no_raw_tex_on_any_page(site):
     assert not found, "\n".join(found[:20])
 
 
+@pytest.mark.slow
+@pytest.mark.browser
+def test_search_finds_the_lectures_offline(browsed):
+    hits = browsed["search"]
+    assert any(h.startswith("lectures/03_") for h in hits), hits
+    assert not browsed["blocked"]
+
+
 RAW_TEX = re.compile(r"\$[^$\n]{1,200}\$|\\\(|\\\)|\\\[|\\\]|\\begin\{|\\frac|\\mathbf")
 
 
@@ -346,8 +362,7 @@ def test_pages_render_math_and_images_offline(browsed, name):
         i for i in r["images"] if not (i[1] and i[2] > 0)]
     if name == LECTURE:
         assert r["math"] >= 20 and len(r["images"]) >= 3, r
-    if name in ("index", LECTURE):
-        assert (ARTIFACTS / f"{name}.png").stat().st_size > 10_000
+    assert (ARTIFACTS / f"{name}.png").stat().st_size > 10_000
 
 
 # ----------------------------------------------------------------------------- handouts
