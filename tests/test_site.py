@@ -219,8 +219,14 @@ def test_every_lecture_and_homework_has_a_page_and_no_solution_is_there(site):
     names = {p.relative_to(site).as_posix() for p in site.rglob("*")}
     assert not [n for n in names if re.search(r"solution|hidden_test|homework_src", n, re.I)]
     # the live-demo note is on the page of every lecture that shows a demo
-    demo_pages = [s for s in lectures if build_site.DEMO_CALL.search(
-        (ROOT / "notebooks" / f"{s}.ipynb").read_text().replace("\\n", "\n"))]
+    def live_demo(cell):
+        src = "".join(cell["source"])
+        return cell["cell_type"] == "code" and build_site.DEMO_CALL.search(src) and not re.search(
+            r"static\s*=\s*True", src)
+
+    demo_pages = [s for s in lectures if any(
+        live_demo(c) for c in json.loads((ROOT / "notebooks" / f"{s}.ipynb").read_text())["cells"])]
+    assert demo_pages
     for stem in demo_pages:
         assert "live-demo" in (site / "lectures" / f"{stem}.html").read_text(), stem
 
@@ -601,6 +607,7 @@ def test_demos_get_a_note_on_running_live_and_links_point_at_pages():
          "and ![pic](fig.png)."},
         _code("%matplotlib widget\nfrom course_lib.widgets import knot_spline_demo", "i"),
         _code("knot_spline_demo()", "k"),
+        _code("knot_spline_demo(static=True)", "s"),
         _code("%matplotlib widget", "w"),
         _code("x = 1", "x"),
         {**_code("plot()", "p"), "outputs": [{"output_type": "display_data", "metadata": {},

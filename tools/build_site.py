@@ -243,7 +243,8 @@ def prepare(nb: dict, repo_path: str, docs: dict[str, str] | None = None) -> dic
             continue
         src = "".join(cell["source"])
         has_picture = any("image/png" in o.get("data", {}) for o in cell.get("outputs", []))
-        if DEMO_CALL.search(src) or (widget_figure_next and has_picture):
+        live_demo = DEMO_CALL.search(src) and not re.search(r"static\s*=\s*True", src)
+        if live_demo or (widget_figure_next and has_picture):
             cells.append(_markdown(LIVE_NOTE.format(path=repo_path), len(cells)))
             widget_figure_next = False
         elif WIDGET_MAGIC.search(src):
