@@ -227,6 +227,9 @@ def test_every_lecture_and_homework_has_a_page_and_no_solution_is_there(site):
     demo_pages = [s for s in lectures if any(
         live_demo(c) for c in json.loads((ROOT / "notebooks" / f"{s}.ipynb").read_text())["cells"])]
     assert demo_pages
+    for stem in lectures:  # static pictures, never a widget view without a kernel behind it
+        page = (site / "lectures" / f"{stem}.html").read_text()
+        assert "widget-view+json" not in page and "<img" in page, stem
     for stem in demo_pages:
         assert "live-demo" in (site / "lectures" / f"{stem}.html").read_text(), stem
 
