@@ -2,6 +2,8 @@
 #   make lab    create .venv, install the course, open JupyterLab on notebooks/00_welcome.ipynb
 #   make test   create .venv, install the course, run the whole test suite
 #   make bench  print the benchmark table;  make grade  grade a folder of homework (see README)
+#   make site   the course as a static website in build/site/ (index.html; any static host)
+#   make handouts  one PDF per lecture in build/handouts/ (needs Debian's chromium)
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
@@ -9,7 +11,7 @@ STAMP  := $(VENV)/.installed
 # JupyterLab refuses to run as root without this flag (containers, CI machines)
 ALLOW_ROOT := $(if $(filter 0,$(shell id -u)),--allow-root,)
 
-.PHONY: install lab test lint bench grade submit release clean
+.PHONY: install lab test lint bench grade submit release site handouts clean
 
 $(STAMP): pyproject.toml constraints.txt
 	$(PYTHON) -m venv $(VENV)
@@ -51,5 +53,14 @@ submit: install
 release: install
 	$(BIN)/python tools/release.py --out dist/student-edition
 
+# The website: lectures and blank homework executed (cached in build/site-cache/), demos as
+# static figures, MathJax bundled; nothing is loaded from the network.  See README.
+site: install
+	$(BIN)/python tools/build_site.py
+
+handouts: site
+	@bash tools/ensure-browser || true
+	$(BIN)/python tools/build_handouts.py
+
 clean:
-	rm -rf $(VENV) test-artifacts
+	rm -rf $(VENV) test-artifacts build/site build/site-src build/site-cache build/site-doctrees build/handouts
