@@ -86,6 +86,8 @@ from grading.runner import (
     grade_payload,
 )
 
+from course_lib import variants
+
 __all__ = [
     "HiddenTests",
     "Result",
@@ -214,6 +216,16 @@ def load_previous(out: Path, tests: HiddenTests) -> list[Result]:
     return [Result(**r) for r in data["results"]]
 
 
+def read_secret(path: Path) -> bytes:
+    try:
+        secret = path.read_bytes().strip()
+    except OSError as exc:
+        raise SystemExit(f"--secret-file {path}: {exc.strerror}") from None
+    if len(secret) < 16:
+        raise SystemExit(f"--secret-file {path}: too short (make one with tools/variant.py secret)")
+    return secret
+
+
 def resolve_sandbox(choice: str) -> tuple[str, str]:
     """``(mode, message)`` for ``--sandbox auto|bwrap|none``."""
     if choice == "none":
@@ -278,6 +290,12 @@ def main(argv: list[str] | None = None) -> int:
         help="submission time: submit()'s manifest (else the file time), or file time",
     )
     p.add_argument("--only", metavar="STUDENT", help="regrade one student, merge into --out")
+    p.add_argument(
+        "--secret-file",
+        type=Path,
+        help="the course secret (tools/variant.py secret): grade each student on their own "
+        "variant of a homework with VARIANTS; without it, on the default data",
+    )
     p.add_argument("--executor", choices=["local", "dask"], default="local")
     p.add_argument(
         "--scheduler",
@@ -322,14 +340,29 @@ def main(argv: list[str] | None = None) -> int:
     keep = load_previous(args.out, tests) if args.only is not None else None
     out = Reports(tests, args.out, fmt=args.format, roster=roster, late=late, keep=keep)
 
+    secret = read_secret(args.secret_file) if args.secret_file else None
+    if tests.variants and secret is None:
+        print(
+            f"note: {tests.homework} has per-student variants; without --secret-file every "
+            "submission is graded on the default data",
+            file=sys.stderr,
+        )
+
     def payload(item) -> dict:
         student, path, _ = item
+        opts = dict(options)
+        if tests.variants and secret is not None:
+            # the code is made from the id the instructor handed codes out for: the roster's
+            # LMS id when there is a roster entry, else the submission's name
+            entry = roster.get(student) if roster else None
+            who = entry.id if entry else student
+            opts["variant"] = variants.code_for(secret, tests.homework, who)
         return {
             "tests_source": tests.source,
             "tests_name": str(args.tests),
             "student": student,
             "notebook": path.read_bytes(),
-            "options": options,
+            "options": opts,
         }
 
     def done(item, data: dict) -> None:

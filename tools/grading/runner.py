@@ -9,6 +9,7 @@ through ``course_lib._probe``; :func:`grade_notebook` runs every question of a
 
 from __future__ import annotations
 
+import functools
 import json
 import os
 import secrets
@@ -58,6 +59,7 @@ class HiddenTests:
     points: dict[str, float]
     functions: dict
     source: str = ""
+    variants: bool = False  # the module sets VARIANTS = True: tests are qN(student, data)
 
     @classmethod
     def load(cls, path: Path) -> HiddenTests:
@@ -77,9 +79,9 @@ class HiddenTests:
         if missing:
             raise SystemExit(f"{path}: no test function for {missing}")
         functions = {q: ns[q] for q in points}
-        return cls(
-            Path(path), str(ns.get("HOMEWORK", Path(path).stem)), dict(points), functions, source
-        )
+        homework = str(ns.get("HOMEWORK", Path(path).stem))
+        variants = bool(ns.get("VARIANTS", False))
+        return cls(Path(path), homework, dict(points), functions, source, variants)
 
     @property
     def max_points(self) -> float:
@@ -450,6 +452,7 @@ def grade_notebook(
     question_timeout: float = DEFAULT_QUESTION_TIMEOUT,
     mode: str = "bwrap",
     limits: sandbox.Limits | None = None,
+    variant: str = "",
 ) -> Result:
     """Run one submission in a sandbox and grade it here; never raises for a bad submission."""
     opts = Options(cell_timeout, time_limit, question_timeout, mode, limits or sandbox.Limits())
@@ -478,6 +481,13 @@ def grade_notebook(
                 f"submitted as {manifest['homework']!r}, graded as {tests.homework!r}"
             )
 
+    variant_data = None
+    if tests.variants:
+        from course_lib import variants
+
+        variant_data = variants.data(tests.homework, variant)
+        if variant:
+            result.run_notes.append(f"graded on the student's own data (variant {variant})")
     job = Path(tempfile.mkdtemp(prefix="job-", dir=_jobs_base()))
     session = _Session(job, cells, opts, start + time_limit, result)
     try:
@@ -488,7 +498,10 @@ def grade_notebook(
                 result.notes[q] = "not graded: the overall time limit was reached"
                 continue
             transport = session.transport(question_timeout)
-            fraction, note = protocol.run_question(tests.functions[q], protocol.Student(transport))
+            test = tests.functions[q]
+            if tests.variants:  # graded on the student's own data (course_lib.variants)
+                test = functools.partial(test, data=variant_data)
+            fraction, note = protocol.run_question(test, protocol.Student(transport))
             result.points[q] = round(fraction * tests.points[q], 2)
             result.notes[q] = note
         for k in sorted(session.errors):

@@ -1,0 +1,110 @@
+"""Every student their own homework data: variants from a code.
+
+A homework that has variants declares a *generator* ``(rng) -> dict`` of its question data
+(points, β's, knots, the order of multiple-choice options, ...), registered here with
+:func:`register`.  Each student gets a short **variant code** from the instructor:
+
+    code = code_for(secret, "hw01", student_id)     # HMAC-SHA256 of homework and id
+
+``secret`` is the course secret, which only the instructor has (``tools/variant.py``), so codes
+cannot be made up or predicted.  In the notebook the student pastes their code
+(``VARIANT = "..."``) and ``data("hw01", VARIANT)`` gives *their* data, reproducibly on any
+machine; an empty code gives the homework's default data (the one printed in the notebook,
+used by the test suite).  The grader recomputes the code from the student's id, so a notebook
+done with a friend's code is graded on the student's own data and its answers are wrong.
+
+The generators are public (they are in the student edition): only the secret is not.
+"""
+
+from __future__ import annotations
+
+import base64
+import hashlib
+import hmac
+from collections.abc import Callable
+
+import numpy as np
+
+__all__ = ["DEFAULT", "code_for", "current", "data", "generators", "register", "rng_for"]
+
+DEFAULT = ""  # the code of the default data
+CODE_LENGTH = 10
+
+_GENERATORS: dict[str, Callable[[np.random.Generator | None], dict]] = {}
+_CURRENT: dict[str, dict] = {}
+
+
+def register(homework: str):
+    """Decorator: ``@register("hw01") def generate(rng)`` (``rng`` is None for the default data)."""
+
+    def deco(fn):
+        _GENERATORS[homework] = fn
+        return fn
+
+    return deco
+
+
+def generators() -> dict[str, Callable]:
+    _load_all()
+    return dict(_GENERATORS)
+
+
+def _load_all() -> None:
+    import importlib
+    import pkgutil
+
+    from course_lib import checks
+
+    for info in pkgutil.iter_modules(checks.__path__):
+        if info.name.startswith("hw"):
+            importlib.import_module(f"course_lib.checks.{info.name}")
+
+
+def code_for(secret: bytes | str, homework: str, student: str) -> str:
+    """The variant code of ``student`` for ``homework`` (uppercase letters and digits)."""
+    key = secret.encode() if isinstance(secret, str) else bytes(secret)
+    if len(key) < 16:
+        raise ValueError("secret must be at least 16 bytes (make one with tools/variant.py secret)")
+    if not isinstance(student, str) or not student.strip():
+        raise ValueError("student must be a non-empty id")
+    digest = hmac.new(key, f"{homework}:{student.strip()}".encode(), hashlib.sha256).digest()
+    return base64.b32encode(digest).decode()[:CODE_LENGTH]
+
+
+def _normalize(code: object) -> str:
+    if not isinstance(code, str):
+        raise TypeError(f"VARIANT must be the code your instructor gave you, as a string; got {code!r}")
+    text = code.strip().upper().replace("-", "").replace(" ", "")
+    if text and (len(text) != CODE_LENGTH or any(c not in "ABCDEFGHIJKLMNOPQRSTUVWXYZ234567" for c in text)):
+        raise ValueError(
+            f"VARIANT {code!r} is not a variant code: {CODE_LENGTH} letters and digits, as your "
+            "instructor gave it (or \"\" for the data printed in the notebook)"
+        )
+    return text
+
+
+def rng_for(homework: str, code: str) -> np.random.Generator | None:
+    """The random generator of a variant (None for the default data)."""
+    text = _normalize(code)
+    if not text:
+        return None
+    seed = int.from_bytes(hashlib.sha256(f"{homework}:{text}".encode()).digest()[:8], "little")
+    return np.random.default_rng(seed)
+
+
+def data(homework: str, code: str = DEFAULT) -> dict:
+    """The question data of ``homework`` for the variant ``code`` (and remember it for the checks)."""
+    if homework not in _GENERATORS:
+        _load_all()
+    if homework not in _GENERATORS:
+        raise ValueError(f"{homework} has no variants (homeworks with variants: {sorted(_GENERATORS)})")
+    result = _GENERATORS[homework](rng_for(homework, code))
+    _CURRENT[homework] = result
+    return result
+
+
+def current(homework: str) -> dict:
+    """The data of the variant last chosen in this kernel (the default data if none was)."""
+    if homework not in _CURRENT:
+        return data(homework, DEFAULT)
+    return _CURRENT[homework]
