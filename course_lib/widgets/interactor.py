@@ -28,7 +28,10 @@ class PointDragger:
     on_move : callable ``(index, x, y) -> None``
         Called on every mouse motion while point ``index`` is held.
     on_release : callable ``(index) -> None``, optional
-        Called when the button is released after a drag.
+        Called when the button is released after a drag, after a last ``on_move`` to
+        the release position (ipympl throttles mouse motion and may drop the last move:
+        the release event carries where the mouse really is, so the point lands exactly
+        under it).
     tolerance : float
         Hit radius in pixels.
     """
@@ -78,8 +81,26 @@ class PointDragger:
         if self.active is None or event.button != 1:
             return
         k, self.active = self.active, None
+        xy = self._data_position(event)
+        if xy is not None:
+            self.on_move(k, *xy)
         if self.on_release is not None:
             self.on_release(k)
+
+    def _data_position(self, event) -> tuple[float, float] | None:
+        """Data coordinates of the event, the pixel clamped into the Axes box (a release
+        outside the Axes leaves the point at its edge, as motion does)."""
+        if event.inaxes is self.ax and event.xdata is not None:
+            return float(event.xdata), float(event.ydata)
+        if event.x is None or event.y is None:
+            return None
+        box = self.ax.bbox
+        px = min(max(float(event.x), box.x0), box.x1)
+        py = min(max(float(event.y), box.y0), box.y1)
+        x, y = self.ax.transData.inverted().transform((px, py))
+        if not (np.isfinite(x) and np.isfinite(y)):
+            return None
+        return float(x), float(y)
 
     def disconnect(self) -> None:
         """Stop listening to the canvas."""
