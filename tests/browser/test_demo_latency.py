@@ -152,7 +152,7 @@ def bench_page(chromium_path, tmp_path_factory, request):
         browser = request.getfixturevalue("chromium_browser")
         server.wait_ready()
         server.start_kernel_for(NOTEBOOK.name)
-        context, page, log = new_page(browser, width=1400, height=1000)
+        context, page, _log = new_page(browser, width=1400, height=1000)
         page.add_init_script(INIT_JS)
         page.goto(f"{server.url}/lab/tree/{NOTEBOOK.name}?reset&token={server.token}")
         expect(page.locator("#jp-main-statusbar")).to_contain_text("| Idle", timeout=90_000)
