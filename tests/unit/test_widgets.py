@@ -741,3 +741,28 @@ def test_rotating_the_3d_pair_uses_coarse_surfaces_until_release():
     mouse(c, "button_release_event", (centre[0] + 30, centre[1]))
     assert not any(a.get_visible() for a in light) and art.F.surface.get_visible()
     assert fig.get_layout_engine() is engine and c._force_full
+
+
+def test_saving_replaces_widget_views_by_a_placeholder():
+    from course_lib.widgets.saving import (
+        WIDGET_MIME,
+        WIDGET_PLACEHOLDER,
+        pre_save_hook,
+        strip_widget_outputs,
+    )
+
+    png = {"output_type": "display_data", "data": {"image/png": "iVBOR"}, "metadata": {}}
+    view = {"output_type": "execute_result", "execution_count": 3, "metadata": {},
+            "data": {WIDGET_MIME: {"model_id": "abc"}, "text/plain": "VBox(...)"}}
+    nb = {"cells": [{"cell_type": "code", "outputs": [png, view]},
+                    {"cell_type": "markdown", "source": "x"}],
+          "metadata": {"widgets": {"state": {}}, "kernelspec": {"name": "python3"}}}
+    assert strip_widget_outputs(nb) == 1
+    assert view["data"] == {"text/plain": WIDGET_PLACEHOLDER}
+    assert png["data"] == {"image/png": "iVBOR"} and "widgets" not in nb["metadata"]
+    assert nb["metadata"]["kernelspec"] == {"name": "python3"}
+    model = {"type": "notebook", "content": {"cells": [{"cell_type": "code",
+             "outputs": [{"data": {WIDGET_MIME: {}}, "metadata": {}}]}], "metadata": {}}}
+    pre_save_hook(model, path="x.ipynb", contents_manager=None)
+    assert model["content"]["cells"][0]["outputs"][0]["data"] == {"text/plain": WIDGET_PLACEHOLDER}
+    pre_save_hook({"type": "file", "content": "text"})  # other files: untouched, no error
