@@ -146,7 +146,7 @@ def assemble_curve_demo(
                 return
             st.set_param(spec.name, snap_to_step(spec, change["new"]), joint=j)
 
-        s.observe(demo.guard(on_value), names="value")
+        observe(demo, s, on_value)
         rows.append(s)
 
     if knots and st.curve.n_segments >= 2:  # interior knots exist
@@ -194,7 +194,7 @@ def assemble_curve_demo(
             st.set_param("knots", change["new"], joint=ksel.value)
 
         ksel.observe(demo.guard(on_knot_select), names="value")
-        kval.observe(demo.guard(on_knot), names="value")
+        observe(demo, kval, on_knot)
         rows.append(w.HBox([ksel, kval]))
 
     a, b = st.curve.domain
@@ -211,7 +211,7 @@ def assemble_curve_demo(
     )
     tsl.add_class("cl-slider-t")
     demo.controls["t"] = tsl
-    tsl.observe(demo.guard(lambda ch: st.set_t(ch["new"])), names="value")
+    observe(demo, tsl, lambda ch: st.set_t(ch["new"]))
     rows.append(tsl)
 
     boxes = []
@@ -253,9 +253,31 @@ def assemble_curve_demo(
             demo.view.ax,
             lambda: st.points,
             demo.guard(st.drag),
-            on_release=demo.guard(lambda k: demo.view.full_redraw()),
+            on_press=demo.guard(lambda k: setattr(demo.view, "interacting", True)),
+            on_release=demo.guard(lambda k: release(demo)),
         )
     return demo
+
+
+def release(demo: Demo) -> None:
+    """End of a drag: limits fitted again (they may shrink now), then one complete frame."""
+    demo.view.interacting = False
+    demo.view.draw(demo.state)
+    demo.view.full_redraw()
+
+
+def observe(demo: Demo, widget, fn) -> None:
+    """``widget.observe(fn)`` on ``value``, guarded (errors shown) and coalesced: a value
+    from the browser that waited behind the previous redraw is superseded by the newest.
+    A value set by code (ipywidgets holds no property lock for it) is handled at once."""
+    from ._coalesce import Coalescer
+
+    def from_browser() -> bool:
+        return "value" in getattr(widget, "_property_lock", {})
+
+    c = Coalescer(demo.guard(fn), may_defer=from_browser)
+    widget.observe(c, names="value")
+    demo.coalescers = [*getattr(demo, "coalescers", []), c]
 
 
 def details_checkbox(demo: Demo):

@@ -415,6 +415,9 @@ class BlitView:
     """
 
     fig = None
+    #: True while the mouse holds a point: axis limits may grow but do not shrink (a
+    #: rescale redraws everything); the release redraws with limits fitted again
+    interacting = False
 
     def setup_blit(self, axes, live: bool) -> None:
         self.blit = bool(live)
@@ -567,8 +570,9 @@ class CurveDemoView(BlitView):
         lo, hi = min(float(K.min()), 0.0), max(float(K.max()), 0.0)
         span = (hi - lo) or 1.0
         L = float(X.max())
-        bad_x = L > x1 or L < 0.7 * x1
-        bad_y = lo < y0 or hi > y1 or span < 0.45 * (y1 - y0)
+        shrink = not self.interacting
+        bad_x = L > x1 or (shrink and L < 0.7 * x1)
+        bad_y = lo < y0 or hi > y1 or (shrink and span < 0.45 * (y1 - y0))
         if bad_x:
             self.kax.set_xlim(0.0, 1.1 * L if L > 0 else 1.0)
         if bad_y:

@@ -34,6 +34,11 @@ class PointDragger:
         under it).
     tolerance : float
         Hit radius in pixels.
+    on_press : callable ``(index) -> None``, optional
+        Called when a point is grabbed.
+    coalesce : bool
+        Drop stale motion events: when moves arrive faster than ``on_move`` returns, only
+        the newest is handled (:class:`~course_lib.widgets._coalesce.Coalescer`).
     """
 
     def __init__(
@@ -43,11 +48,17 @@ class PointDragger:
         on_move: Callable[[int, float, float], None],
         on_release: Callable[[int], None] | None = None,
         tolerance: float = 10.0,
+        on_press: Callable[[int], None] | None = None,
+        coalesce: bool = True,
     ) -> None:
+        from ._coalesce import Coalescer
+
         self.ax = ax
         self.get_points = get_points
         self.on_move = on_move
         self.on_release = on_release
+        self.on_press = on_press
+        self.moves = Coalescer(lambda k, x, y: self.on_move(k, x, y)) if coalesce else None
         self.tolerance = float(tolerance)
         self.active: int | None = None
         canvas = ax.figure.canvas
@@ -71,16 +82,24 @@ class PointDragger:
         if event.inaxes is not self.ax or event.button != 1:
             return
         self.active = self.hit(event.x, event.y)
+        if self.active is not None and self.on_press is not None:
+            self.on_press(self.active)
 
     def _motion(self, event) -> None:
         if self.active is None or event.inaxes is not self.ax or event.xdata is None:
             return
-        self.on_move(self.active, float(event.xdata), float(event.ydata))
+        if self.moves is not None:
+            self.moves(self.active, float(event.xdata), float(event.ydata))
+        else:
+            self.on_move(self.active, float(event.xdata), float(event.ydata))
 
     def _release(self, event) -> None:
         if self.active is None or event.button != 1:
             return
         k, self.active = self.active, None
+        if self.moves is not None:  # the release position supersedes any queued move
+            self.moves.pending = None
+            self.moves.flush()
         xy = self._data_position(event)
         if xy is not None:
             self.on_move(k, *xy)

@@ -229,14 +229,14 @@ def reparametrization_demo(
     if static:
         return demo
 
-    from ._controls import _slider, snap_to_step
+    from ._controls import _slider, observe, snap_to_step
     from .interactor import PointDragger
 
     sa = _slider(A_SLIDER, state.a)
     sv = _slider(V_SLIDER, state.v)
     demo.controls.update(a=sa, t=sv)
-    sa.observe(demo.guard(lambda ch: state.set_a(snap_to_step(A_SLIDER, ch["new"]))), names="value")
-    sv.observe(demo.guard(lambda ch: state.set_t(snap_to_step(V_SLIDER, ch["new"]))), names="value")
+    observe(demo, sa, lambda ch: state.set_a(snap_to_step(A_SLIDER, ch["new"])))
+    observe(demo, sv, lambda ch: state.set_t(snap_to_step(V_SLIDER, ch["new"])))
     demo.build_widgets([sa, sv])
     demo.dragger = PointDragger(
         view.ax,

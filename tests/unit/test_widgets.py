@@ -766,3 +766,54 @@ def test_saving_replaces_widget_views_by_a_placeholder():
     pre_save_hook(model, path="x.ipynb", contents_manager=None)
     assert model["content"]["cells"][0]["outputs"][0]["data"] == {"text/plain": WIDGET_PLACEHOLDER}
     pre_save_hook({"type": "file", "content": "text"})  # other files: untouched, no error
+
+
+def test_coalescer_draws_the_newest_of_queued_events():
+    import asyncio
+
+    from course_lib.widgets._coalesce import Coalescer
+
+    seen = []
+
+    def slow(x):
+        seen.append(x)
+        import time
+
+        time.sleep(0.01)  # a redraw
+
+    async def run():
+        c = Coalescer(slow, gap=0.05, delay=0.01)
+        for x in range(6):  # handled back to back: all but the first waited in the queue
+            c(x)
+        await asyncio.sleep(0.03)  # the newest (5) was handled at ~0.02 s
+        c(99)  # later, but within `gap` of the last call: queued again, then handled
+        await asyncio.sleep(0.05)
+        code = Coalescer(slow, gap=0.05, may_defer=lambda: False)  # values set by code
+        for x in range(3):
+            code(x)
+        return c
+
+    c = asyncio.run(run())
+    assert seen == [0, 5, 99, 0, 1, 2] and c.dropped == 4
+    # without an event loop (tests, scripts) every event is handled at once
+    seen.clear()
+    c = Coalescer(slow, gap=10.0)
+    c(1)
+    c(2)
+    assert seen == [1, 2]
+
+
+def test_dragging_keeps_the_curvature_axes_until_release():
+    demo = g2_stitch_demo(beta1=1.5, beta2=1.0)
+    ax, canvas, view = demo.view.ax, demo.figure.canvas, demo.view
+    canvas.draw()
+    lim = view.kax.get_ylim()
+    k = 3  # the joint: the curvature changes a lot
+    p = demo.state.points[k]
+    mouse(canvas, "button_press_event", ax.transData.transform(p))
+    assert view.interacting
+    mouse(canvas, "motion_notify_event", ax.transData.transform(p + np.array([0.0, -0.6])))
+    small = view.kax.get_ylim()
+    assert small[0] <= lim[0] and small[1] >= lim[1]  # may grow while dragging, never shrink
+    mouse(canvas, "button_release_event", ax.transData.transform(p + np.array([0.0, -0.6])))
+    assert not view.interacting
