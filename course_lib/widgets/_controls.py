@@ -254,16 +254,9 @@ def assemble_curve_demo(
             lambda: st.points,
             demo.guard(st.drag),
             on_press=demo.guard(lambda k: setattr(demo.view, "interacting", True)),
-            on_release=demo.guard(lambda k: release(demo)),
+            on_release=demo.guard(lambda k: demo.view.end_interaction()),
         )
     return demo
-
-
-def release(demo: Demo) -> None:
-    """End of a drag: limits fitted again (they may shrink now), then one complete frame."""
-    demo.view.interacting = False
-    demo.view.draw(demo.state)
-    demo.view.full_redraw()
 
 
 def observe(demo: Demo, widget, fn) -> None:

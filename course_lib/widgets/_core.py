@@ -459,6 +459,15 @@ class BlitView:
         canvas.draw_idle()
         return "full" if not self.blit else "idle"
 
+    def refit(self) -> None:
+        """Fit limits that were left alone while interacting (subclasses)."""
+
+    def end_interaction(self) -> str:
+        """The mouse let go: limits may shrink again, and one complete frame is sent."""
+        self.interacting = False
+        self.refit()
+        return self.full_redraw()
+
     def full_redraw(self) -> str:
         """A complete frame: background redrawn and, on ipympl, a full image instead of a
         diff against the browser's last picture (heals a lost partial frame)."""
@@ -558,6 +567,10 @@ class CurveDemoView(BlitView):
         self.setup_blit((self.ax, self.kax), live)
         self.draw(state)
         state.view = self
+
+    def refit(self) -> None:
+        if self.state.show_curvature:
+            self._profile_limits()
 
     def _profile_limits(self) -> None:
         """Rescale the curvature Axes only when the data leaves it or shrinks a lot

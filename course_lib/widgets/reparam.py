@@ -242,6 +242,6 @@ def reparametrization_demo(
         view.ax,
         lambda: state.points,
         demo.guard(state.drag),
-        on_release=demo.guard(lambda k: view.full_redraw()),
+        on_release=demo.guard(lambda k: view.end_interaction()),
     )
     return demo

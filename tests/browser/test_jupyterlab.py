@@ -413,6 +413,19 @@ class TestJupyterLab:
             "() => getComputedStyle(document.body).getPropertyValue('--jp-content-font-size1')")
         assert font.strip() == "16px", font
         expect(page.locator(".jp-toast-message", has_text="news")).to_have_count(0)
+        # a student's 1366×768 laptop: the demo fits the notebook column, nothing scrolls sideways
+        page.set_viewport_size({"width": 1366, "height": 768})
+        page.wait_for_timeout(500)
+        demo = page.locator(".cl-demo").first
+        demo.scroll_into_view_if_needed()
+        overflow = page.evaluate("""() => {
+          const el = document.querySelector('.jp-NotebookPanel .jp-WindowedPanel-outer')
+            || document.querySelector('.jp-NotebookPanel .jp-Notebook');
+          return el.scrollWidth - el.clientWidth;
+        }""")
+        page.screenshot(path=str(ARTIFACTS / "jupyterlab-1366x768.png"))
+        assert overflow <= 0, f"the notebook scrolls sideways by {overflow} px at 1366×768"
+        page.set_viewport_size({"width": 1400, "height": 1000})
         saved = lab.server.root / NOTEBOOK.name
         before = saved.stat().st_mtime_ns
         page.locator(".jp-NotebookPanel").first.click()
