@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import html
 
-__all__ = ["DETAIL_NOTE", "demo_report_html"]
+__all__ = ["DETAIL_NOTE", "NOISE", "demo_report_html"]
 
 #: The one-line explanation shown above the details.
 DETAIL_NOTE = (
@@ -21,10 +21,15 @@ DETAIL_NOTE = (
 )
 
 
+#: below this, a gap, angle, jump or β is rounding noise of the computation and shows as 0
+#: (a student reading "3.25e-15°" sees a number, not a tangent that is continuous)
+NOISE = 1e-9
+
+
 def _num(x: float, fmt: str) -> str:
     x = float(x)
-    if x == 0:
-        x = 0.0  # no "-0"
+    if abs(x) < NOISE:
+        x = 0.0  # no "-2.7e-15", no "-0"
     return format(x, fmt)
 
 

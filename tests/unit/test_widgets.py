@@ -817,3 +817,16 @@ def test_dragging_keeps_the_curvature_axes_until_release():
     assert small[0] <= lim[0] and small[1] >= lim[1]  # may grow while dragging, never shrink
     mouse(canvas, "button_release_event", ax.transData.transform(p + np.array([0.0, -0.6])))
     assert not view.interacting
+
+
+def test_report_shows_rounding_noise_as_zero():
+    """A G2 Beta-spline joint: the computed angle, jump and β2 = 0 carry ~1e-15 of noise."""
+    from dataclasses import replace
+
+    from course_lib.widgets.report import demo_report_html
+
+    demo = beta_spline_demo(beta1=1.07, beta2=0.0)
+    rep = replace(demo.state.report, tangent_angle=3.25e-15, curvature_jump=1.57e-16,
+                  betas=(1.072, -2.747e-15, 5.0))
+    html_ = demo_report_html(rep, 2)
+    assert "e-1" not in html_ and "0°" in html_ and "β2 = 0<" in html_.replace(",", "<")
