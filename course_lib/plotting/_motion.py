@@ -3,8 +3,9 @@
 On an interactive canvas (ipympl), every mouse motion that rotates a 3D Axes redraws the
 whole figure: the surfaces, three axes with their ticks, and -- with constrained layout --
 a layout pass that measures every tick label.  While the button is held,
-:class:`LightWhileRotating` shows coarse surfaces instead of the full ones and freezes
-the layout (the Axes keep their place); on release it puts everything back and sends
+:class:`LightWhileRotating` shows coarse surfaces instead of the full ones, hides the turning
+Axes' panes, ticks and labels (they cost most of a 3D frame: measured 240 -> 44 ms per
+draw on a busy 2-core machine) and freezes the layout (the Axes keep their place); on release it puts everything back and sends
 one complete frame (a full image, not a diff: it also heals a frame the browser lost).
 
 Only artists are swapped: no geometry is computed here (the coarse surfaces are made once
@@ -50,6 +51,7 @@ class LightWhileRotating:
         self.light = list(light)
         self.rotating = False
         self._layout = None
+        self._axis_on = True
         for a in self.light:
             a.set_visible(False)
         canvas = ax.get_figure(root=True).canvas
@@ -70,6 +72,8 @@ class LightWhileRotating:
             a.set_visible(False)
         for a in self.light:
             a.set_visible(True)
+        self._axis_on = bool(getattr(self.ax, "_axis3don", self.ax.axison))
+        self.ax.set_axis_off()
 
     def _release(self, event) -> None:
         if not self.rotating:
@@ -83,6 +87,8 @@ class LightWhileRotating:
             a.set_visible(False)
         for a in self.full:
             a.set_visible(True)
+        if self._axis_on:
+            self.ax.set_axis_on()
         canvas = fig.canvas
         if hasattr(canvas, "_force_full"):
             canvas._force_full = True

@@ -736,11 +736,12 @@ def test_rotating_the_3d_pair_uses_coarse_surfaces_until_release():
     mouse(c, "button_press_event", centre)
     assert all(a.get_visible() for a in light) and not art.F.surface.get_visible()
     assert fig.get_layout_engine() is not engine  # layout frozen while turning
+    assert not ax._axis3don  # no panes, ticks, labels while turning
     mouse(c, "motion_notify_event", (centre[0] + 30, centre[1]))
     c._force_full = False
     mouse(c, "button_release_event", (centre[0] + 30, centre[1]))
     assert not any(a.get_visible() for a in light) and art.F.surface.get_visible()
-    assert fig.get_layout_engine() is engine and c._force_full
+    assert fig.get_layout_engine() is engine and c._force_full and ax._axis3don
 
 
 def test_saving_replaces_widget_views_by_a_placeholder():
