@@ -255,7 +255,7 @@ def test_input_to_canvas_latency(bench_page, artifacts):
                       "drag samples": [round(x, 1) for x in drag]}
 
     # -- the 3D patch pair of lecture 05: turn the left panel
-    sel = ".cl-bench-patches"  # (the first one, if ipympl shows the figure twice)
+    sel = ".cl-bench-patches"
     fig = page.locator(sel).first
     fig.scroll_into_view_if_needed()
     fig.locator("canvas").first.wait_for(state="visible", timeout=30_000)
