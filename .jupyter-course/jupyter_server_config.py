@@ -17,7 +17,7 @@ if not SETTINGS.exists():
 
 c = get_config()  # noqa: F821 (provided by Jupyter when it loads this file)
 c.LabApp.user_settings_dir = str(SETTINGS)
-c.LabApp.workspaces_dir = str(HERE / "lab" / "workspaces")
+c.LabApp.workspaces_dir = str(HERE / "lab" / "workspaces")  # the course's own layouts
 c.LabApp.news_url = None
 c.LabApp.check_for_updates_class = "jupyterlab.NeverCheckForUpdate"
 c.ContentsManager.pre_save_hook = "course_lib.widgets.saving.pre_save_hook"
