@@ -50,4 +50,4 @@ grade: install
 	    --submissions $(SUBMISSIONS) --out $(OUT) --jobs 2
 
 clean:
-	rm -rf $(VENV) test-artifacts
+	rm -rf $(VENV) test-artifacts build/present
