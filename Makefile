@@ -1,6 +1,7 @@
 # The course's commands.  On a fresh machine (Python 3.10+):
 #   make lab    create .venv, install the course, open JupyterLab on notebooks/00_welcome.ipynb
 #   make test   create .venv, install the course, run the whole test suite
+#   make present L=04   the lecture as projector slides with live demos (Voila, see README)
 #   make bench  print the benchmark table;  make grade  grade a folder of homework (see README)
 #   make site   the course as a static website in build/site/ (index.html; any static host)
 #   make handouts  one PDF per lecture in build/handouts/ (needs Debian's chromium)
@@ -11,7 +12,7 @@ STAMP  := $(VENV)/.installed
 # JupyterLab refuses to run as root without this flag (containers, CI machines)
 ALLOW_ROOT := $(if $(filter 0,$(shell id -u)),--allow-root,)
 
-.PHONY: install lab test lint bench grade submit release site handouts clean
+.PHONY: install lab present test lint bench grade submit release site handouts clean
 
 $(STAMP): pyproject.toml constraints.txt
 	$(PYTHON) -m venv $(VENV)
@@ -20,8 +21,16 @@ $(STAMP): pyproject.toml constraints.txt
 
 install: $(STAMP)
 
+# the course's own JupyterLab settings and save hook (never the user's ~/.jupyter)
+LAB_CONFIG := $(CURDIR)/.jupyter-course/jupyter_server_config.py
 lab: install
-	$(BIN)/jupyter lab --ServerApp.root_dir=$(CURDIR) $(ALLOW_ROOT) notebooks/00_welcome.ipynb
+	$(BIN)/jupyter lab --config=$(LAB_CONFIG) --ServerApp.root_dir=$(CURDIR) $(ALLOW_ROOT) notebooks/00_welcome.ipynb
+
+# make present L=04 [PORT=8866]: a deck generated from the lecture, served by Voila
+L ?= 00
+PORT ?= 8866
+present: install
+	$(BIN)/python tools/present.py $(L) --port $(PORT)
 
 test: install
 	@bash tools/ensure-browser || true
@@ -63,4 +72,4 @@ handouts: site
 	$(BIN)/python tools/build_handouts.py
 
 clean:
-	rm -rf $(VENV) test-artifacts build/site build/site-src build/site-cache build/site-doctrees build/handouts
+	rm -rf $(VENV) test-artifacts build/site build/site-src build/site-cache build/site-doctrees build/handouts build/present

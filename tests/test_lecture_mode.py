@@ -128,3 +128,67 @@ def log_text(f) -> str:
     f.flush()
     f.seek(0)
     return f.read()[-3000:]
+
+
+# ----------------------------------------------- make present: the deck of a lecture
+def _present():
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("present", ROOT / "tools" / "present.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def test_deck_is_the_lecture_without_answer_cells(tmp_path):
+    import json
+
+    present = _present()
+    lecture = present.find_lecture("04")
+    assert lecture.name.startswith("04_")
+    deck = present.build_deck(lecture, tmp_path)
+    src = json.loads(lecture.read_text())["cells"]
+    out = json.loads(deck.read_text())["cells"]
+    answers = [c for c in src if c["cell_type"] == "code"
+               and present.ANSWER_CELL.search("".join(c["source"]))]
+    assert answers, "lecture 04 has check-your-understanding cells"
+    kept = [c for c in src if c not in answers]
+    # the same cells in the same order (no second copy to maintain), minus the answers,
+    # plus the last cell that tells present.py the deck was executed
+    assert [c["id"] for c in out[:-1]] == [c["id"] for c in kept]
+    assert all(not c.get("outputs") for c in out if c["cell_type"] == "code")
+    assert present.READY in "".join(out[-1]["source"])
+    assert any("_demo(" in "".join(c["source"]) for c in out)
+
+
+def test_find_lecture_names_the_lectures_on_a_bad_choice():
+    present = _present()
+    assert present.find_lecture("4") == present.find_lecture("04")
+    with pytest.raises(ValueError, match=r"L must name one lecture.*00_welcome"):
+        present.find_lecture("99")
+
+
+def test_voila_runs_the_deck_template_preheated_and_offline():
+    present = _present()
+    cmd = " ".join(present.voila_command(Path("/x/04_beta_splines.ipynb"), 8866))
+    assert "--template=course-deck" in cmd and "--preheat_kernel=True" in cmd
+    assert "--Voila.ip=127.0.0.1" in cmd
+    env = present.voila_env({})
+    assert int(env["COURSE_CANVAS_PX"]) >= 0.6 * 1920
+    tpl = ROOT / ".jupyter-course" / "voila" / "templates" / "course-deck" / "index.html.j2"
+    assert env["JUPYTER_PATH"].split(os.pathsep)[0] == str(tpl.parents[3])
+    import re
+
+    loads = re.findall(r"""(?:href|src)=["']https?://[^"']+""", tpl.read_text())
+    assert not loads, loads  # nothing from a CDN
+
+
+def test_make_present_and_make_lab_commands():
+    if shutil.which("make") is None:
+        pytest.skip("make is not installed")
+    out = subprocess.run(["make", "-n", "-o", ".venv/.installed", "present", "L=04"],
+                         cwd=ROOT, capture_output=True, text=True).stdout
+    assert "tools/present.py 04" in out
+    out = subprocess.run(["make", "-n", "-o", ".venv/.installed", "lab"],
+                         cwd=ROOT, capture_output=True, text=True).stdout
+    assert "--config=" + str(ROOT / ".jupyter-course" / "jupyter_server_config.py") in out

@@ -92,6 +92,8 @@ class PatchPairArtists:
     normals_G: object | None
     v: np.ndarray
     length: float
+    #: on an interactive canvas: coarse surfaces while the mouse rotates (see ``_motion``)
+    motion: object | None = None
 
 
 def plot_patch_pair(
@@ -175,7 +177,18 @@ def plot_patch_pair(
         pts += [p + dF, q + dG]
     _fit_limits(ax, np.vstack(pts))
     ax.set_box_aspect((1, 1, 1))
-    return PatchPairArtists(a, b, bd, nF, nG, v, float(length))
+    motion = None
+    from ._motion import LightWhileRotating, is_interactive_canvas
+
+    if is_interactive_canvas(ax.get_figure(root=True).canvas):
+        # turning the picture with the mouse: coarse surfaces and a frozen layout until release
+        coarse = max(2, min(resolution, 7))
+        light = [
+            plot_patch(ax, P, color=col, resolution=coarse, net=False).surface
+            for P, col in ((F, OKABE_ITO["blue"]), (G, OKABE_ITO["vermillion"]))
+        ]
+        motion = LightWhileRotating(ax, [a.surface, b.surface], light)
+    return PatchPairArtists(a, b, bd, nF, nG, v, float(length), motion)
 
 
 def _fit_limits(ax, P: np.ndarray, margin: float = 0.05) -> None:

@@ -10,16 +10,19 @@ classes of CONTRIBUTING.md (``cl-demo``, ``cl-slider-beta1``, ``cl-slider-beta2`
 ``cl-slider-beta3``, ``cl-slider-t``, ``cl-slider-knot``, ``cl-report``, ``cl-canvas``,
 ``cl-warning``).
 
-Lecture mode (a projector, no code on screen): Voilà renders a notebook's outputs
-with live widgets, e.g. ``.venv/bin/voila notebooks/04_beta_splines.ipynb`` (add
-``--no-browser --port=8866`` on a server).  JupyterLab also works; the RISE slide view
-does not render ipywidgets or ipympl (jupyterlab-contrib/rise #119).  Offline, Voilà's
-default template asks a CDN for FontAwesome: two harmless console errors.
+Lecture mode (a projector, no code on screen): ``make present L=04`` serves a deck generated
+from the lecture with Voilà, the course's ``course-deck`` template and a pre-heated kernel
+(``tools/present.py``); there ``$COURSE_CANVAS_PX`` makes every demo canvas 1280 px wide.
+The RISE slide view does not render ipywidgets or ipympl (jupyterlab-contrib/rise #119).
+
+Demos follow the hand: only moving artists are redrawn (:class:`BlitView`), queued input is
+coalesced (``_coalesce``), a released point lands under the mouse and the release sends a
+full frame; ``cl-check-details`` shows the report's higher orders and residuals.
 """
 
 from __future__ import annotations
 
-from ._core import CurveDemoState, CurveDemoView, Demo, SliderSpec, joint_report
+from ._core import BlitView, CurveDemoState, CurveDemoView, Demo, SliderSpec, joint_report
 from .demos import (
     beta_spline_demo,
     catmull_rom_demo,
@@ -34,6 +37,7 @@ from .outlines import GlyphDemoState, glyph_demo
 from .reparam import ReparametrizationState
 
 __all__ = [
+    "BlitView",
     "CurveDemoState",
     "CurveDemoView",
     "Demo",

@@ -10,7 +10,45 @@ import numpy as np
 
 from ._core import CurveDemoState, Demo, SliderSpec
 
-__all__ = ["assemble_curve_demo"]
+__all__ = ["assemble_curve_demo", "readout_format", "snap_to_step"]
+
+
+def _decimals(step: float) -> int:
+    """Decimals needed to write multiples of ``step`` (0.1 -> 1, 0.0025 -> 4)."""
+    for d in range(0, 10):
+        if abs(round(step, d) - step) <= 1e-9 * abs(step):
+            return d
+    return 10
+
+
+def readout_format(spec: SliderSpec) -> str:
+    """Fixed decimals from the step for a linear slider (``"0.0"``, never ``"-1.78e-15"``:
+    d3-format writes a negative number that rounds to zero without its sign); three
+    significant digits for a log slider."""
+    return ".3g" if spec.log else f".{max(1, _decimals(spec.step))}f"
+
+
+def snap_to_step(spec: SliderSpec, value: float) -> float:
+    """``value`` without the float error of the slider's grid: a value within 1e-6 step of
+    a position ``min + k * step`` (for a log slider, of the exponent grid) becomes that
+    position rounded to the step's decimals (``-10 + 100 * 0.1 = -1.78e-15`` becomes 0.0,
+    ``1.0999999999999996`` becomes 1.1); any other value (set from code) is kept."""
+    v = float(value)
+    d = _decimals(spec.step) + 2
+    if spec.log:
+        if v <= 0:
+            return v
+        lo = float(np.floor(np.log10(spec.min) / spec.step + 1e-9) * spec.step)
+        e = float(np.log10(v))
+        k = round((e - lo) / spec.step)
+        if abs(e - (lo + k * spec.step)) > 1e-6 * spec.step:
+            return v
+        return float(10.0 ** round(lo + k * spec.step, d))
+    k = round((v - spec.min) / spec.step)
+    grid = spec.min + k * spec.step
+    if abs(v - grid) > 1e-6 * spec.step:
+        return v
+    return round(grid, d) + 0.0  # + 0.0: no "-0"
 
 
 def _slider(spec: SliderSpec, value: float):
@@ -23,7 +61,7 @@ def _slider(spec: SliderSpec, value: float):
         "step": spec.step,
         "description": spec.description,
         "continuous_update": True,
-        "readout_format": ".3g",
+        "readout_format": readout_format(spec),
         "style": {"description_width": "3em"},
         "layout": w.Layout(width="22em"),
     }
@@ -106,9 +144,9 @@ def assemble_curve_demo(
             j = None if (same is None or same.value or not spec.per_joint) else st.joint
             if _rounding_only(spec, st, change["new"], j):
                 return
-            st.set_param(spec.name, change["new"], joint=j)
+            st.set_param(spec.name, snap_to_step(spec, change["new"]), joint=j)
 
-        s.observe(demo.guard(on_value), names="value")
+        observe(demo, s, on_value)
         rows.append(s)
 
     if knots and st.curve.n_segments >= 2:  # interior knots exist
@@ -156,7 +194,7 @@ def assemble_curve_demo(
             st.set_param("knots", change["new"], joint=ksel.value)
 
         ksel.observe(demo.guard(on_knot_select), names="value")
-        kval.observe(demo.guard(on_knot), names="value")
+        observe(demo, kval, on_knot)
         rows.append(w.HBox([ksel, kval]))
 
     a, b = st.curve.domain
@@ -173,7 +211,7 @@ def assemble_curve_demo(
     )
     tsl.add_class("cl-slider-t")
     demo.controls["t"] = tsl
-    tsl.observe(demo.guard(lambda ch: st.set_t(ch["new"])), names="value")
+    observe(demo, tsl, lambda ch: st.set_t(ch["new"]))
     rows.append(tsl)
 
     boxes = []
@@ -193,6 +231,7 @@ def assemble_curve_demo(
     rows.append(w.HBox(boxes[:2]))
     rows.append(w.HBox(boxes[2:]))
     rows.extend(extra_rows)
+    rows.append(details_checkbox(demo))
 
     if nj >= 1:
 
@@ -214,5 +253,37 @@ def assemble_curve_demo(
             demo.view.ax,
             lambda: st.points,
             demo.guard(st.drag),
+            on_press=demo.guard(lambda k: setattr(demo.view, "interacting", True)),
+            on_release=demo.guard(lambda k: demo.view.end_interaction()),
         )
     return demo
+
+
+def observe(demo: Demo, widget, fn) -> None:
+    """``widget.observe(fn)`` on ``value``, guarded (errors shown) and coalesced: a value
+    from the browser that waited behind the previous redraw is superseded by the newest.
+    A value set by code (ipywidgets holds no property lock for it) is handled at once."""
+    from ._coalesce import Coalescer
+
+    def from_browser() -> bool:
+        return "value" in getattr(widget, "_property_lock", {})
+
+    c = Coalescer(demo.guard(fn), may_defer=from_browser)
+    widget.observe(c, names="value")
+    demo.coalescers = [*getattr(demo, "coalescers", []), c]
+
+
+def details_checkbox(demo: Demo):
+    """ "more detail" switch of the report (class ``cl-check-details``)."""
+    import ipywidgets as w
+
+    cb = w.Checkbox(
+        value=bool(getattr(demo.state, "show_details", False)),
+        description="more detail in the report (higher orders, residuals)",
+        indent=False,
+        layout=w.Layout(width="auto"),
+    )
+    cb.add_class("cl-check-details")
+    cb.observe(demo.guard(lambda ch: demo.state.set_details(ch["new"])), names="value")
+    demo.controls["details"] = cb
+    return cb

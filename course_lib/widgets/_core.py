@@ -30,6 +30,7 @@ from .._validation import as_points, check_finite_scalar, check_integer
 
 __all__ = [
     "CANVAS_WIDTH_PX",
+    "BlitView",
     "CurveDemoState",
     "CurveDemoView",
     "Demo",
@@ -102,6 +103,9 @@ class CurveDemoState:
         (default: the same index).
     t : float, optional
         Global parameter of the moving point (default: middle of the domain).
+    order : int, optional
+        The continuity order the demo is about (default ``max_order``): the report shows
+        orders up to it; higher orders, residuals and all β's only with ``show_details``.
 
     Raises
     ------
@@ -126,6 +130,8 @@ class CurveDemoState:
         samples: int = 400,
         max_order: int = 3,
         min_points: int = 2,
+        order: int | None = None,
+        show_details: bool = False,
     ) -> None:
         self.build = build
         self.points = as_points(points, "points", min_points=min_points, dims=(2,)).copy()
@@ -140,6 +146,11 @@ class CurveDemoState:
         self.show_circle = bool(show_circle)
         self.samples = check_integer(samples, "samples", minimum=2)
         self.max_order = check_integer(max_order, "max_order", minimum=1)
+        #: the continuity order the demo is about (the report shows it first)
+        self.order = self.max_order if order is None else check_integer(order, "order", minimum=0)
+        if self.order > self.max_order:
+            raise ValueError(f"order must be <= max_order = {self.max_order}; got {self.order}")
+        self.show_details = bool(show_details)
         self.curve = build(self.points.copy(), self._params_copy())  # bad data raises here
         self.joint = self._check_joint(joint)
         a, b = self.curve.domain
@@ -219,6 +230,12 @@ class CurveDemoState:
         setattr(self, name, bool(value))
         self.update()
 
+    def set_details(self, value: bool) -> None:
+        """Show or hide the report's details (no recomputation, no redraw)."""
+        self.show_details = bool(value)
+        for f in self.listeners:
+            f(self)
+
     def drag(self, k: int, x: float, y: float) -> None:
         """Move design point ``k`` to ``(x, y)`` and update.  Never raises on geometry:
         a degenerate configuration (e.g. two coincident points) becomes ``warning``."""
@@ -277,7 +294,9 @@ class CurveDemoState:
                 f"{html.escape(self.warning)}</p>"
             )
         if self.report is not None:
-            parts.append(self.report._repr_html_())
+            from .report import demo_report_html
+
+            parts.append(demo_report_html(self.report, self.order, self.show_details))
         elif not self.warning:
             parts.append("<p>This curve has a single segment: no joint to report.</p>")
         return "".join(parts)
@@ -288,6 +307,21 @@ class CurveDemoState:
 #: about 970 px wide in a 1400 px browser window with the file browser open (measured
 #: with headless Chromium); a wider canvas is clipped on the right.
 CANVAS_WIDTH_PX = 880
+#: Environment variable that overrides ``CANVAS_WIDTH_PX`` (``make present`` sets it: on a
+#: 1920 px projector the demo canvas is 1280 px wide).
+CANVAS_WIDTH_ENV = "COURSE_CANVAS_PX"
+
+
+def canvas_width_px() -> int:
+    """Width of an interactive canvas: ``$COURSE_CANVAS_PX`` (400 .. 3000) or ``CANVAS_WIDTH_PX``."""
+    import os
+
+    raw = os.environ.get(CANVAS_WIDTH_ENV, "")
+    try:
+        px = int(raw)
+    except ValueError:
+        return CANVAS_WIDTH_PX
+    return px if 400 <= px <= 3000 else CANVAS_WIDTH_PX
 
 
 def _ipympl_canvas_classes():
@@ -314,12 +348,12 @@ def _ipympl_canvas_classes():
 
 def make_figure(figsize: tuple[float, float], static: bool):
     """A bare Figure on an Agg canvas (``static``, 100 dpi) or on an ipympl canvas widget
-    (``CANVAS_WIDTH_PX`` wide: the dpi is chosen for it, the layout stays the same)."""
+    (``canvas_width_px()`` wide: the dpi is chosen for it, the layout stays the same)."""
     from matplotlib.figure import Figure
 
     from ..plotting.style import course_style
 
-    dpi = 100.0 if static else CANVAS_WIDTH_PX / float(figsize[0])
+    dpi = 100.0 if static else canvas_width_px() / float(figsize[0])
     with course_style():
         fig = Figure(figsize=figsize, dpi=dpi)
     if static:
@@ -371,7 +405,79 @@ def fit_equal_limits(ax, P: np.ndarray, margin: float = 0.2, top: float = 0.0) -
     ax.set_autoscale_on(False)
 
 
-class CurveDemoView:
+class BlitView:
+    """Redraw only what moves: the artists of some Axes are "animated" and blitted over a
+    cached background (frames, ticks, labels, legend); the rest is drawn on a full frame only.
+
+    A subclass calls :meth:`setup_blit` once its artists exist and :meth:`render` after
+    changing them; :meth:`full_redraw` (on mouse release) sends a complete picture, which
+    also heals a partial (diff) frame the browser may have lost.
+    """
+
+    fig = None
+    #: True while the mouse holds a point: axis limits may grow but do not shrink (a
+    #: rescale redraws everything); the release redraws with limits fitted again
+    interacting = False
+
+    def setup_blit(self, axes, live: bool) -> None:
+        self.blit = bool(live)
+        self.background = None
+        self._full = True
+        self.dynamic = [
+            a
+            for ax in axes
+            for a in (*ax.lines, *ax.collections, *ax.patches, *ax.texts, *ax.artists)
+        ]
+        if self.blit:
+            # the figure must then be redrawn through render() (savefig omits animated artists)
+            for a in self.dynamic:
+                a.set_animated(True)
+            self._cid = self.fig.canvas.mpl_connect("draw_event", self._on_draw)
+
+    def _on_draw(self, event) -> None:
+        canvas = self.fig.canvas
+        self.background = canvas.copy_from_bbox(self.fig.bbox)
+        self._draw_dynamic()
+
+    def _draw_dynamic(self) -> None:
+        for a in self.dynamic:
+            if a.get_visible() and a.axes.get_visible():
+                self.fig.draw_artist(a)
+
+    def render(self) -> str:
+        """Redraw the canvas: blit over the cached background when nothing static changed,
+        else ask for a full draw.  Returns ``"blit"``, ``"full"`` or ``"idle"``."""
+        canvas = self.fig.canvas
+        if self.blit and self.background is not None and not self._full:
+            canvas.restore_region(self.background)
+            self._draw_dynamic()
+            canvas.blit(self.fig.bbox)
+            return "blit"
+        self._full = False
+        if self.blit:
+            self.background = None
+        canvas.draw_idle()
+        return "full" if not self.blit else "idle"
+
+    def refit(self) -> None:
+        """Fit limits that were left alone while interacting (subclasses)."""
+
+    def end_interaction(self) -> str:
+        """The mouse let go: limits may shrink again, and one complete frame is sent."""
+        self.interacting = False
+        self.refit()
+        return self.full_redraw()
+
+    def full_redraw(self) -> str:
+        """A complete frame: background redrawn and, on ipympl, a full image instead of a
+        diff against the browser's last picture (heals a lost partial frame)."""
+        self._full = True
+        if hasattr(self.fig.canvas, "_force_full"):
+            self.fig.canvas._force_full = True
+        return self.render()
+
+
+class CurveDemoView(BlitView):
     """The picture of a :class:`CurveDemoState`; updates its artists in place.
 
     Parameters
@@ -457,48 +563,14 @@ class CurveDemoView:
         # Blitting (interactive canvases only; a static figure must keep every artist for
         # savefig): everything drawn on the two Axes is "animated", the rest (frames,
         # ticks, labels) is a cached background restored before the artists are redrawn.
-        self.blit = live
-        self.background = None
-        self._full = True
         self._flags = None
-        self.dynamic = [
-            a
-            for axes in (self.ax, self.kax)
-            for a in (*axes.lines, *axes.collections, *axes.patches, *axes.texts, *axes.artists)
-        ]
-        if self.blit:
-            # the figure must then be redrawn through render() (savefig omits animated artists)
-            for a in self.dynamic:
-                a.set_animated(True)
-            self._cid = self.fig.canvas.mpl_connect("draw_event", self._on_draw)
+        self.setup_blit((self.ax, self.kax), live)
         self.draw(state)
         state.view = self
 
-    # -------------------------------------------------------------- blitting
-    def _on_draw(self, event) -> None:
-        canvas = self.fig.canvas
-        self.background = canvas.copy_from_bbox(self.fig.bbox)
-        self._draw_dynamic()
-
-    def _draw_dynamic(self) -> None:
-        for a in self.dynamic:
-            if a.get_visible() and a.axes.get_visible():
-                self.fig.draw_artist(a)
-
-    def render(self) -> str:
-        """Redraw the canvas: blit over the cached background when nothing static changed,
-        else ask for a full draw.  Returns ``"blit"``, ``"full"`` or ``"idle"``."""
-        canvas = self.fig.canvas
-        if self.blit and self.background is not None and not self._full:
-            canvas.restore_region(self.background)
-            self._draw_dynamic()
-            canvas.blit(self.fig.bbox)
-            return "blit"
-        self._full = False
-        if self.blit:
-            self.background = None
-        canvas.draw_idle()
-        return "full" if not self.blit else "idle"
+    def refit(self) -> None:
+        if self.state.show_curvature:
+            self._profile_limits()
 
     def _profile_limits(self) -> None:
         """Rescale the curvature Axes only when the data leaves it or shrinks a lot
@@ -511,8 +583,9 @@ class CurveDemoView:
         lo, hi = min(float(K.min()), 0.0), max(float(K.max()), 0.0)
         span = (hi - lo) or 1.0
         L = float(X.max())
-        bad_x = L > x1 or L < 0.7 * x1
-        bad_y = lo < y0 or hi > y1 or span < 0.45 * (y1 - y0)
+        shrink = not self.interacting
+        bad_x = L > x1 or (shrink and L < 0.7 * x1)
+        bad_y = lo < y0 or hi > y1 or (shrink and span < 0.45 * (y1 - y0))
         if bad_x:
             self.kax.set_xlim(0.0, 1.1 * L if L > 0 else 1.0)
         if bad_y:

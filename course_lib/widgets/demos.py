@@ -79,7 +79,10 @@ def _finish(
     extras=(),
     title: str | None = None,
     design_polygon: bool = True,
+    order: int | None = None,
 ) -> Demo:
+    if order is not None:  # the continuity order the demo is about: shown first in the report
+        state.order = min(int(order), state.max_order)
     for spec in sliders:  # an initial value the slider cannot show is an error, not clamped
         spec.check(state.params[spec.name])
     static = _static(static)
@@ -146,6 +149,7 @@ def curvature_comb_demo(curve=None, *, static: bool | None = None) -> Demo:
         state,
         static=static,
         name="curvature comb",
+        order=2,
         design_polygon=False,
         title="drag the control points",
     )
@@ -197,6 +201,7 @@ def catmull_rom_demo(points=None, beta1=1.0, *, static: bool | None = None) -> D
         state,
         static=static,
         name="Catmull-Rom",
+        order=1,
         sliders=[BETA1],
         design_labels="$V_{{{i}}}$",
         title="Catmull-Rom spline with β₁",
@@ -264,6 +269,7 @@ def beta_spline_demo(
         state,
         static=static,
         name="Beta-spline",
+        order=1 if degree == 2 else 2,
         sliders=sliders,
         design_labels="$V_{{{i}}}$",
         extras=[_junction_marks],
@@ -318,6 +324,7 @@ def quartic_beta_spline_demo(
         state,
         static=static,
         name="quartic Beta-spline",
+        order=3,
         sliders=[replace(BETA1, per_joint=False), QUARTIC_BETA2, QUARTIC_BETA3],
         design_labels="$V_{{{i}}}$",
         title="quartic G3 Beta-spline",
@@ -369,6 +376,7 @@ def g2_stitch_demo(V=None, beta1=1.0, beta2=0.0, W3=None, *, static: bool | None
         state,
         static=static,
         name="G2 stitching",
+        order=2,
         sliders=[replace(BETA1, per_joint=False), BETA2_STITCH],
         design_polygon=False,
         extras=[_farin_boehm_overlay],  # the diagram labels the points
@@ -447,6 +455,7 @@ def knot_spline_demo(d_points=None, knots=None, *, static: bool | None = None) -
         state,
         static=static,
         name="G1 knot spline",
+        order=1,
         knots=True,
         design_labels=labels,
         extras=[_knot_overlay],

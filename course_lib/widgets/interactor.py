@@ -28,9 +28,17 @@ class PointDragger:
     on_move : callable ``(index, x, y) -> None``
         Called on every mouse motion while point ``index`` is held.
     on_release : callable ``(index) -> None``, optional
-        Called when the button is released after a drag.
+        Called when the button is released after a drag, after a last ``on_move`` to
+        the release position (ipympl throttles mouse motion and may drop the last move:
+        the release event carries where the mouse really is, so the point lands exactly
+        under it).
     tolerance : float
         Hit radius in pixels.
+    on_press : callable ``(index) -> None``, optional
+        Called when a point is grabbed.
+    coalesce : bool
+        Drop stale motion events: when moves arrive faster than ``on_move`` returns, only
+        the newest is handled (:class:`~course_lib.widgets._coalesce.Coalescer`).
     """
 
     def __init__(
@@ -40,11 +48,17 @@ class PointDragger:
         on_move: Callable[[int, float, float], None],
         on_release: Callable[[int], None] | None = None,
         tolerance: float = 10.0,
+        on_press: Callable[[int], None] | None = None,
+        coalesce: bool = True,
     ) -> None:
+        from ._coalesce import Coalescer
+
         self.ax = ax
         self.get_points = get_points
         self.on_move = on_move
         self.on_release = on_release
+        self.on_press = on_press
+        self.moves = Coalescer(lambda k, x, y: self.on_move(k, x, y)) if coalesce else None
         self.tolerance = float(tolerance)
         self.active: int | None = None
         canvas = ax.figure.canvas
@@ -68,18 +82,44 @@ class PointDragger:
         if event.inaxes is not self.ax or event.button != 1:
             return
         self.active = self.hit(event.x, event.y)
+        if self.active is not None and self.on_press is not None:
+            self.on_press(self.active)
 
     def _motion(self, event) -> None:
         if self.active is None or event.inaxes is not self.ax or event.xdata is None:
             return
-        self.on_move(self.active, float(event.xdata), float(event.ydata))
+        if self.moves is not None:
+            self.moves(self.active, float(event.xdata), float(event.ydata))
+        else:
+            self.on_move(self.active, float(event.xdata), float(event.ydata))
 
     def _release(self, event) -> None:
         if self.active is None or event.button != 1:
             return
         k, self.active = self.active, None
+        if self.moves is not None:  # the release position supersedes any queued move
+            self.moves.pending = None
+            self.moves.flush()
+        xy = self._data_position(event)
+        if xy is not None:
+            self.on_move(k, *xy)
         if self.on_release is not None:
             self.on_release(k)
+
+    def _data_position(self, event) -> tuple[float, float] | None:
+        """Data coordinates of the event, the pixel clamped into the Axes box (a release
+        outside the Axes leaves the point at its edge, as motion does)."""
+        if event.inaxes is self.ax and event.xdata is not None:
+            return float(event.xdata), float(event.ydata)
+        if event.x is None or event.y is None:
+            return None
+        box = self.ax.bbox
+        px = min(max(float(event.x), box.x0), box.x1)
+        py = min(max(float(event.y), box.y0), box.y1)
+        x, y = self.ax.transData.inverted().transform((px, py))
+        if not (np.isfinite(x) and np.isfinite(y)):
+            return None
+        return float(x), float(y)
 
     def disconnect(self) -> None:
         """Stop listening to the canvas."""

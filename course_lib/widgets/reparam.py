@@ -14,7 +14,7 @@ import html
 import numpy as np
 
 from .._validation import as_points, check_finite_scalar
-from ._core import Demo, SliderSpec, _widgets_available, fit_equal_limits, make_figure
+from ._core import BlitView, Demo, SliderSpec, _widgets_available, fit_equal_limits, make_figure
 
 __all__ = ["ReparametrizationState", "reparametrization_demo"]
 
@@ -126,9 +126,10 @@ class ReparametrizationState:
         return f"<table class='cl-reparam-report'>{body}</table>"
 
 
-class ReparametrizationView:
+class ReparametrizationView(BlitView):
     """Left: the curve with the samples of both parametrizations and their velocity
-    vectors at the moving point; right: the graph of ``f``."""
+    vectors at the moving point; right: the graph of ``f``.  On an interactive canvas only
+    the moving artists are redrawn (blitted over a cached background, :class:`BlitView`)."""
 
     def __init__(self, state: ReparametrizationState, static: bool) -> None:
         from ..plotting import plot_control_polygon, plot_curve, plot_vectors
@@ -172,9 +173,10 @@ class ReparametrizationView:
         self.fax.set_xlabel("v")
         self.fax.set_ylabel("u = f(v)")
         self.fax.set_title("change of variables f", fontsize=12)
-        self.draw(state)
         fit_equal_limits(self.ax, state.points, margin=0.08, top=0.3)
         self.ax.legend(loc="upper center", ncol=2, fontsize=10)
+        self.setup_blit((self.ax, self.fax), live=not static)
+        self.draw(state)
         state.view = self
 
     def draw(self, st: ReparametrizationState) -> None:
@@ -198,7 +200,7 @@ class ReparametrizationView:
         v = np.linspace(0, 1, 101)
         self.fline.set_ydata(st.f(v))
         self.fpt.set_data([st.v], [st.u])
-        self.fig.canvas.draw_idle()
+        self.render()
 
 
 def reparametrization_demo(
@@ -227,14 +229,19 @@ def reparametrization_demo(
     if static:
         return demo
 
-    from ._controls import _slider
+    from ._controls import _slider, observe, snap_to_step
     from .interactor import PointDragger
 
     sa = _slider(A_SLIDER, state.a)
     sv = _slider(V_SLIDER, state.v)
     demo.controls.update(a=sa, t=sv)
-    sa.observe(demo.guard(lambda ch: state.set_a(ch["new"])), names="value")
-    sv.observe(demo.guard(lambda ch: state.set_t(ch["new"])), names="value")
+    observe(demo, sa, lambda ch: state.set_a(snap_to_step(A_SLIDER, ch["new"])))
+    observe(demo, sv, lambda ch: state.set_t(snap_to_step(V_SLIDER, ch["new"])))
     demo.build_widgets([sa, sv])
-    demo.dragger = PointDragger(view.ax, lambda: state.points, demo.guard(state.drag))
+    demo.dragger = PointDragger(
+        view.ax,
+        lambda: state.points,
+        demo.guard(state.drag),
+        on_release=demo.guard(lambda k: view.end_interaction()),
+    )
     return demo

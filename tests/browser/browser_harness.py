@@ -156,19 +156,17 @@ class Server:
         return env
 
     def lab_command(self) -> list[str]:
+        # The course's own configuration, as `make lab` loads it: its settings defaults
+        # (no news popup, font sizes, kernel started without asking) and the pre-save hook
+        # that strips widget views.  The user-settings folder stays private, seeded with the
+        # course's defaults as `make lab` seeds .jupyter-course/lab/user-settings/.
         settings = self.base / "settings"
-        for rel, content in (
-            ("@jupyterlab/apputils-extension/notification.jupyterlab-settings",
-             {"fetchNews": "false", "checkForUpdates": False}),
-            ("@jupyterlab/notebook-extension/tracker.jupyterlab-settings",
-             {"autoStartDefaultKernel": True}),
-        ):
-            f = settings / rel
-            f.parent.mkdir(parents=True, exist_ok=True)
-            f.write_text(json.dumps(content))
+        if not settings.exists():
+            shutil.copytree(ROOT / ".jupyter-course" / "lab" / "user-settings-defaults", settings)
         cmd = [
             sys.executable, "-m", "jupyterlab", "--no-browser",
             "--ServerApp.ip=127.0.0.1", f"--ServerApp.port={self.port}",
+            f"--config={ROOT / '.jupyter-course' / 'jupyter_server_config.py'}",
             "--ServerApp.port_retries=0", f"--IdentityProvider.token={self.token}",
             f"--ServerApp.root_dir={self.root}",
             f"--LabApp.user_settings_dir={settings}",

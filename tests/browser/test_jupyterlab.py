@@ -403,6 +403,48 @@ class TestJupyterLab:
         page.screenshot(path=str(artifacts / "jupyterlab-notebook-after-interaction.png"))
         assert (artifacts / "jupyterlab-demo-after-interaction.png").stat().st_size > 0
 
+    def test_course_settings_and_no_dead_widgets_after_saving(self, lab):
+        """``make lab``'s configuration (.jupyter-course/): readable font, no news popup,
+        and a saved notebook holds no widget view that would be dead on reopening."""
+        from playwright.sync_api import expect
+
+        page = lab.page
+        font = page.evaluate(
+            "() => getComputedStyle(document.body).getPropertyValue('--jp-content-font-size1')")
+        assert font.strip() == "16px", font
+        expect(page.locator(".jp-toast-message", has_text="news")).to_have_count(0)
+        # a student's 1366×768 laptop: the demo fits the notebook column, nothing scrolls sideways
+        page.set_viewport_size({"width": 1366, "height": 768})
+        page.wait_for_timeout(500)
+        demo = page.locator(".cl-demo").first
+        demo.scroll_into_view_if_needed()
+        overflow = page.evaluate("""() => {
+          const el = document.querySelector('.jp-NotebookPanel .jp-WindowedPanel-outer')
+            || document.querySelector('.jp-NotebookPanel .jp-Notebook');
+          return el.scrollWidth - el.clientWidth;
+        }""")
+        page.screenshot(path=str(ARTIFACTS / "jupyterlab-1366x768.png"))
+        assert overflow <= 0, f"the notebook scrolls sideways by {overflow} px at 1366×768"
+        page.set_viewport_size({"width": 1400, "height": 1000})
+        saved = lab.server.root / NOTEBOOK.name
+        before = saved.stat().st_mtime_ns
+        page.locator(".jp-NotebookPanel").first.click()
+        page.keyboard.press("Escape")
+        page.keyboard.press("Control+s")
+        deadline = time.monotonic() + 20
+        while saved.stat().st_mtime_ns == before and time.monotonic() < deadline:
+            page.wait_for_timeout(200)
+        nb = json.loads(saved.read_text())
+        outputs = [o for c in nb["cells"] for o in c.get("outputs", [])]
+        assert outputs, "the notebook was saved without its outputs"
+        mimes = {k for o in outputs for k in o.get("data", {})}
+        assert "application/vnd.jupyter.widget-view+json" not in mimes
+        assert "widgets" not in nb["metadata"]
+        from course_lib.widgets.saving import WIDGET_PLACEHOLDER
+
+        assert any(WIDGET_PLACEHOLDER in "".join(o.get("data", {}).get("text/plain", ""))
+                   for o in outputs)
+
     def test_stop_leaves_no_process(self, lab):
         lab.page.context.close()
         lab.server.stop()

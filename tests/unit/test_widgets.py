@@ -607,3 +607,227 @@ def test_a_demo_does_not_turn_later_figures_into_widgets():
     assert "application/vnd.jupyter.widget-view+json" in kinds[2]
     assert "image/png" in kinds[1] and "image/png" in kinds[3]
     assert "application/vnd.jupyter.widget-view+json" not in kinds[3]
+
+
+# ------------------------------------------- demos that follow the hand (issue 16)
+def _render_log(view, monkeypatch):
+    """Record what each redraw of ``view`` was: "blit" (moving artists only) or a full frame."""
+    log = []
+    orig = view.render
+    monkeypatch.setattr(view, "render", lambda: log.append(orig()) or log[-1])
+    return log
+
+
+@pytest.mark.parametrize("factory", [reparametrization_demo, curvature_comb_demo])
+def test_slider_and_drag_redraw_only_the_moving_artists(factory, monkeypatch):
+    demo = factory()
+    view, canvas = demo.view, demo.figure.canvas
+    canvas.draw()  # what the browser's first frame does: caches the background
+    assert view.blit and view.background is not None
+    log = _render_log(view, monkeypatch)
+    demo.controls["t"].value = 0.4
+    k = 1
+    x, y = demo.state.points[k] + 0.1
+    demo.state.drag(k, x, y)
+    assert log == ["blit", "blit"]
+    # the frames, ticks and the legend are background: never animated
+    legend = view.ax.get_legend()
+    static = [view.ax.patch, view.ax.xaxis, *([legend] if legend else [])]
+    assert not any(a in view.dynamic for a in static)
+
+
+@pytest.mark.parametrize("factory", [reparametrization_demo, curvature_comb_demo])
+def test_release_lands_under_the_mouse_and_sends_a_full_frame(factory, monkeypatch):
+    """ipympl may drop the last motion event: the release event's position is used."""
+    demo = factory()
+    ax, canvas, view = demo.view.ax, demo.figure.canvas, demo.view
+    canvas.draw()
+    k = 1
+    p = demo.state.points[k].copy()
+    mid, end = p + np.array([0.2, 0.1]), p + np.array([0.45, -0.3])
+    mouse(canvas, "button_press_event", ax.transData.transform(p))
+    mouse(canvas, "motion_notify_event", ax.transData.transform(mid))
+    canvas._force_full = False
+    log = _render_log(view, monkeypatch)
+    mouse(canvas, "button_release_event", ax.transData.transform(end))  # no motion to `end`
+    np.testing.assert_allclose(demo.state.points[k], end, atol=1e-9)
+    drawn = np.column_stack(view.design.line.get_data())
+    np.testing.assert_allclose(drawn[k], end, atol=1e-9)
+    assert log[-1] in ("idle", "full") and canvas._force_full  # a complete image follows
+
+
+def test_release_outside_the_axes_keeps_the_point_at_the_edge():
+    demo = curvature_comb_demo()
+    ax, canvas = demo.view.ax, demo.figure.canvas
+    k = 5
+    mouse(canvas, "button_press_event", ax.transData.transform(demo.state.points[k]))
+    right = ax.bbox.x1 + 40, ax.bbox.y0 + 0.5 * ax.bbox.height
+    mouse(canvas, "button_release_event", right)
+    x_edge = ax.transData.inverted().transform((ax.bbox.x1, 0))[0]
+    np.testing.assert_allclose(demo.state.points[k][0], x_edge, rtol=1e-9)
+
+
+def test_sliders_lose_the_float_error_of_their_grid():
+    from course_lib.widgets._controls import readout_format, snap_to_step
+    from course_lib.widgets.demos import BETA1, BETA2_STITCH
+
+    demo = g2_stitch_demo(beta1=1.0, beta2=1.0)
+    s2 = demo.controls["beta2"]
+    s2.value = -1.7763568394002505e-15  # what the browser sent for the position "0"
+    assert s2.value != 0.0 and demo.state.params["beta2"] == 0.0
+    assert "β2 = 0" in demo.report.value and "e-" not in demo.report.value
+    s2.value = 1.0999999999999996
+    assert demo.state.params["beta2"] == 1.1
+    assert s2.readout_format == readout_format(BETA2_STITCH) == ".1f"
+    assert snap_to_step(BETA2_STITCH, 1.23) == 1.23  # off the grid (set from code): kept
+    assert snap_to_step(BETA1, 10 ** (0.17 + 1e-12)) == 10**0.17
+    assert snap_to_step(BETA1, 2.0) == 2.0
+
+
+def test_report_shows_the_demos_order_and_details_on_request():
+    from course_lib.widgets.report import DETAIL_NOTE
+
+    demo = g2_stitch_demo(beta1=1.5, beta2=1.0)
+    html_ = demo.report.value
+    assert "G2 ✓" in html_ and "β1 = 1.5" in html_ and "β2 = 1" in html_
+    assert "β3" not in html_ and "residual" not in html_ and "G3" not in html_
+    rep = demo.state.report
+    demo.controls["details"].value = True
+    assert demo.state.report is rep  # a switch of the report only: nothing recomputed
+    html_ = demo.report.value
+    assert "β3" in html_ and "residual" in html_
+    import html as h
+
+    assert h.escape(DETAIL_NOTE) in html_
+    # a G1 demo reports G1 and no curvature row unless asked
+    kd = knot_spline_demo()
+    assert "G1 ✓" in kd.report.value and "curvature jump" not in kd.report.value
+    # a joint below the demo's order says which order it reaches
+    comb = curvature_comb_demo()  # G1, not G2
+    assert "G1 only (not G2)" in comb.report.value
+
+
+def test_rotating_the_3d_pair_uses_coarse_surfaces_until_release():
+    from course_lib.plotting.surfaces3d import plot_patch_pair
+    from course_lib.surfaces import BezierPatch, g1_neighbour_patch
+
+    xy = np.stack(np.meshgrid(np.arange(4.0), np.arange(4.0), indexing="ij"), axis=-1)
+    hill = [[0, 0.5, 0.5, 0], [0.3, 1.6, 1.3, 0.2], [0.2, 1.3, 1.8, 0.4], [0, 0.4, 0.7, 0.2]]
+    F = BezierPatch(np.concatenate([xy, np.array(hill)[..., None]], axis=-1))
+    G = g1_neighbour_patch(F, F.control_net[3] + np.array([[[1.5, 0, 0.3]], [[3.0, 0, -0.2]]]))
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    fig = Figure(layout="constrained")
+    FigureCanvasAgg(fig)
+    assert plot_patch_pair(fig.add_subplot(projection="3d"), F, G).motion is None  # static
+    from ipympl.backend_nbagg import Canvas, FigureManager
+
+    fig = Figure(layout="constrained")
+    FigureManager(Canvas(fig), 0)
+    ax = fig.add_subplot(projection="3d")
+    art = plot_patch_pair(ax, F, G, net=False)
+    c = fig.canvas
+    c.draw()
+    engine = fig.get_layout_engine()
+    light = art.motion.light
+    assert not any(a.get_visible() for a in light)
+    centre = ax.bbox.x0 + 0.5 * ax.bbox.width, ax.bbox.y0 + 0.5 * ax.bbox.height
+    mouse(c, "button_press_event", centre)
+    assert all(a.get_visible() for a in light) and not art.F.surface.get_visible()
+    assert fig.get_layout_engine() is not engine  # layout frozen while turning
+    assert not ax._axis3don  # no panes, ticks, labels while turning
+    mouse(c, "motion_notify_event", (centre[0] + 30, centre[1]))
+    c._force_full = False
+    mouse(c, "button_release_event", (centre[0] + 30, centre[1]))
+    assert not any(a.get_visible() for a in light) and art.F.surface.get_visible()
+    assert fig.get_layout_engine() is engine and c._force_full and ax._axis3don
+
+
+def test_saving_replaces_widget_views_by_a_placeholder():
+    from course_lib.widgets.saving import (
+        WIDGET_MIME,
+        WIDGET_PLACEHOLDER,
+        pre_save_hook,
+        strip_widget_outputs,
+    )
+
+    png = {"output_type": "display_data", "data": {"image/png": "iVBOR"}, "metadata": {}}
+    view = {"output_type": "execute_result", "execution_count": 3, "metadata": {},
+            "data": {WIDGET_MIME: {"model_id": "abc"}, "text/plain": "VBox(...)"}}
+    nb = {"cells": [{"cell_type": "code", "outputs": [png, view]},
+                    {"cell_type": "markdown", "source": "x"}],
+          "metadata": {"widgets": {"state": {}}, "kernelspec": {"name": "python3"}}}
+    assert strip_widget_outputs(nb) == 1
+    assert view["data"] == {"text/plain": WIDGET_PLACEHOLDER}
+    assert png["data"] == {"image/png": "iVBOR"} and "widgets" not in nb["metadata"]
+    assert nb["metadata"]["kernelspec"] == {"name": "python3"}
+    model = {"type": "notebook", "content": {"cells": [{"cell_type": "code",
+             "outputs": [{"data": {WIDGET_MIME: {}}, "metadata": {}}]}], "metadata": {}}}
+    pre_save_hook(model, path="x.ipynb", contents_manager=None)
+    assert model["content"]["cells"][0]["outputs"][0]["data"] == {"text/plain": WIDGET_PLACEHOLDER}
+    pre_save_hook({"type": "file", "content": "text"})  # other files: untouched, no error
+
+
+def test_coalescer_draws_the_newest_of_queued_events():
+    import asyncio
+
+    from course_lib.widgets._coalesce import Coalescer
+
+    seen = []
+
+    def slow(x):
+        seen.append(x)
+        import time
+
+        time.sleep(0.01)  # a redraw
+
+    async def run():
+        c = Coalescer(slow, gap=0.05, delay=0.01)
+        for x in range(6):  # handled back to back: all but the first waited in the queue
+            c(x)
+        await asyncio.sleep(0.03)  # the newest (5) was handled at ~0.02 s
+        c(99)  # later, but within `gap` of the last call: queued again, then handled
+        await asyncio.sleep(0.05)
+        code = Coalescer(slow, gap=0.05, may_defer=lambda: False)  # values set by code
+        for x in range(3):
+            code(x)
+        return c
+
+    c = asyncio.run(run())
+    assert seen == [0, 5, 99, 0, 1, 2] and c.dropped == 4
+    # without an event loop (tests, scripts) every event is handled at once
+    seen.clear()
+    c = Coalescer(slow, gap=10.0)
+    c(1)
+    c(2)
+    assert seen == [1, 2]
+
+
+def test_dragging_keeps_the_curvature_axes_until_release():
+    demo = g2_stitch_demo(beta1=1.5, beta2=1.0)
+    ax, canvas, view = demo.view.ax, demo.figure.canvas, demo.view
+    canvas.draw()
+    lim = view.kax.get_ylim()
+    k = 3  # the joint: the curvature changes a lot
+    p = demo.state.points[k]
+    mouse(canvas, "button_press_event", ax.transData.transform(p))
+    assert view.interacting
+    mouse(canvas, "motion_notify_event", ax.transData.transform(p + np.array([0.0, -0.6])))
+    small = view.kax.get_ylim()
+    assert small[0] <= lim[0] and small[1] >= lim[1]  # may grow while dragging, never shrink
+    mouse(canvas, "button_release_event", ax.transData.transform(p + np.array([0.0, -0.6])))
+    assert not view.interacting
+
+
+def test_report_shows_rounding_noise_as_zero():
+    """A G2 Beta-spline joint: the computed angle, jump and β2 = 0 carry ~1e-15 of noise."""
+    from dataclasses import replace
+
+    from course_lib.widgets.report import demo_report_html
+
+    demo = beta_spline_demo(beta1=1.07, beta2=0.0)
+    rep = replace(demo.state.report, tangent_angle=3.25e-15, curvature_jump=1.57e-16,
+                  betas=(1.072, -2.747e-15, 5.0))
+    html_ = demo_report_html(rep, 2)
+    assert "e-1" not in html_ and "0°" in html_ and "β2 = 0<" in html_.replace(",", "<")
