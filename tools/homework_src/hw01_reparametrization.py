@@ -35,7 +35,6 @@
 # %%
 import numpy as np
 import sympy as sp
-
 from numpy.polynomial import polynomial as P
 from scipy.integrate import quad
 
