@@ -130,7 +130,7 @@ Q2_CASES = [(_composite_a, 0.7), (_composite_b, 1.3)]
 
 def q1(student, data):
     T = answers.array(student["answer_q1"], (2,), "answer_q1", "a plane vector")
-    assert answers.close(T, _unit_tangent(data["q1"])), "T(t0) is wrong"
+    assert answers.close(T, _unit_tangent(data["q1"])), f"T({data['q1']['t']:g}) is wrong"
 
 
 def q2(student, data):
@@ -154,12 +154,12 @@ def q3(student, data):
 
 def q4(student, data):
     kappa = answers.number(student["answer_q4"], "answer_q4")
-    assert answers.close(kappa, _kappa(data["q4"])), "κ(u0) is wrong"
+    assert answers.close(kappa, _kappa(data["q4"])), f"κ({data['q4']['u']:g}) is wrong"
 
 
 def q5(student, data):
     v = answers.array(student["answer_q5"], (2,), "answer_q5", "a plane vector")
-    assert answers.close(v, _second_derivative(data["q5"])), "q̃''(s0) is wrong"
+    assert answers.close(v, _second_derivative(data["q5"])), f"q̃''({data['q5']['s']:g}) is wrong"
 
 
 def q6(student, data):
