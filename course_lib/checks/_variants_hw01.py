@@ -8,8 +8,8 @@ is well posed by construction (tested over thousands of codes in ``tests/test_va
   non-zero components of different sizes (``‖c'‖ ≥ √2``: regular; a swapped or backwards
   tangent is a different vector);
 * q3: four changes of variables of ``[0, 1]``, one of each kind -- not regular (``f' = 0`` at
-  an end), orientation-reversing, not onto ``[0, 1]``, and the right one (q5's ``f``) -- in an
-  order shuffled per student;
+  an end), orientation-reversing, not onto ``[0, 1]``, and the right one (of q5's family, but
+  another ``w`` than q5's, except in the default data) -- in an order shuffled per student;
 * q4, q5, q7: the parabola ``q(u) = (u, k u²)``, ``k ≠ 0``; q4 at ``u0 ≠ 0`` with ``|κ|`` away
   from 1 (curvature ≠ radius); q5 with ``f(s) = (1 − w) s + w s²``, ``0 < |w| < 1`` (so
   ``f(0) = 0, f(1) = 1, f' ≥ 1 − |w| > 0``) at ``s`` with ``f(s) ≠ s`` and ``f'(s) ≠ 1`` (the
@@ -116,7 +116,7 @@ def _params(rng: np.random.Generator | None) -> dict:
         return {
             "x": [0, 1, 1], "y": [0, -2, 0, 1], "t": Fraction(1),
             "q3": [NOT_REGULAR[0], REVERSING[0], NOT_ONTO[0], None], "k": Fraction(1), "u": Fraction(1),
-            "w": Fraction(1, 2), "s": Fraction(3, 4), "b": Fraction(1), "q6": list(Q6_OPTIONS),
+            "w": Fraction(1, 2), "w3": Fraction(1, 2), "s": Fraction(3, 4), "b": Fraction(1), "q6": list(Q6_OPTIONS),
         }  # fmt: skip
 
     def pick(seq):
@@ -135,9 +135,11 @@ def _params(rng: np.random.Generator | None) -> dict:
             break
     q3 = [pick(NOT_REGULAR), pick(REVERSING), pick(NOT_ONTO), None]
     q3 = [q3[i] for i in rng.permutation(4)]
+    w = pick(W_VALUES)
+    w3 = pick([v for v in W_VALUES if v != w])  # q5's f is not q3's answer (no give-away)
     q6 = [Q6_OPTIONS[i] for i in rng.permutation(5)]
     return {
-        "x": x, "y": y, "t": t, "q3": q3, "k": k, "u": u, "w": pick(W_VALUES), "s": pick(S_VALUES),
+        "x": x, "y": y, "t": t, "q3": q3, "k": k, "u": u, "w": w, "w3": w3, "s": pick(S_VALUES),
         "b": pick(QUARTERS[1:]), "q6": q6,
     }  # fmt: skip
 
@@ -152,7 +154,8 @@ def generate(rng: np.random.Generator | None) -> dict:
     letters = "abcd"
     options, coefficients = {}, {}
     for letter, option in zip(letters, p["q3"], strict=True):
-        coef, text = (f_coef, _f_text(w)) if option is None else option
+        w3 = p["w3"]
+        coef, text = ([0, 1 - w3, w3], _f_text(w3)) if option is None else option
         options[letter] = f"f(s) = {text}"
         coefficients[letter] = _floats(coef)
     q6 = {letter: label for letter, label in zip("abcde", p["q6"], strict=True)}

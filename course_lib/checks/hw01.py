@@ -93,10 +93,11 @@ def _q2(func):
 
 def _is_change_of_variables(coef) -> tuple[bool, str]:
     """Seed 000 §4 for a polynomial f on [0, 1]: f(0) = 0, f(1) = 1, f' > 0 (on a fine grid)."""
-    if not math.isclose(P.polyval(0.0, coef), 0.0, abs_tol=1e-12) or not math.isclose(
-        P.polyval(1.0, coef), 1.0, abs_tol=1e-12
-    ):
-        return False, "it does not map [0, 1] onto [0, 1] with f(0) = 0 and f(1) = 1"
+    f0, f1 = P.polyval(0.0, coef), P.polyval(1.0, coef)
+    if math.isclose(f0, 1.0, abs_tol=1e-12) and math.isclose(f1, 0.0, abs_tol=1e-12):
+        return False, "f(0) = 1 and f(1) = 0: it reverses the orientation"
+    if not (math.isclose(f0, 0.0, abs_tol=1e-12) and math.isclose(f1, 1.0, abs_tol=1e-12)):
+        return False, "it does not map [0, 1] onto [0, 1]"
     slope = P.polyval(np.linspace(0.0, 1.0, 1001), P.polyder(coef))
     if slope.min() <= 1e-12:
         where = "somewhere" if slope.max() > 0 else "everywhere"

@@ -156,7 +156,7 @@ check("hw01.q4", answer_q4)
 # ## Question 5 — reparametrize the parabola (compute)
 #
 # Reparametrize the parabola $\mathbf q(u) = (u, k u^2)$ of question 4 by the change of
-# variables $f$ of your data (the right option of question 3): $\tilde{\mathbf q}(s) =
+# variables $f$ of your data (a change of variables as in question 3): $\tilde{\mathbf q}(s) =
 # \mathbf q(f(s))$. Compute $\tilde{\mathbf q}''(s_0)$ at the point $s_0$ of your data (shape
 # `(2,)`), for instance with your `chain_rule_derivatives`. `DATA["q5"]` holds `k`, the
 # coefficients `f` of $f$ in ascending powers of $s$, and `s`.
