@@ -27,7 +27,7 @@ import sympy as sp
 
 matplotlib.use("Agg")
 
-from course_lib import answers
+from course_lib import answers, variants
 from course_lib.checks import HOMEWORKS, check, questions, registry
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -475,10 +475,18 @@ TABLE = {
 ALL_IDS = [q for hw in HOMEWORKS for q in questions(hw)]
 
 
+def hidden_test(hw: str, q: str):
+    """The hidden test ``q`` of ``hw``, on the default data if the homework has variants."""
+    test = getattr(HIDDEN[hw], q)
+    if getattr(HIDDEN[hw], "VARIANTS", False):
+        return functools.partial(test, data=variants.data(hw, variants.DEFAULT))
+    return test
+
+
 def _grade(qid: str, value) -> tuple[float, str]:
     hw, q = qid.split(".")
     name = registry()[qid].answer_name
-    return run_question(getattr(HIDDEN[hw], q), LocalStudent({name: value}))
+    return run_question(hidden_test(hw, q), LocalStudent({name: value}))
 
 
 def test_every_question_has_a_table():
@@ -588,7 +596,7 @@ def test_solution_notebook_scores_full_marks(hw):
     ns = _namespace(hw, "solution")
     module = HIDDEN[hw]
     for q in module.POINTS:
-        fraction, note = run_question(getattr(module, q), LocalStudent(ns))
+        fraction, note = run_question(hidden_test(hw, q), LocalStudent(ns))
         assert fraction == 1.0, f"{hw}.{q}: {fraction} ({note})"
 
 
@@ -597,7 +605,7 @@ def test_blank_exercise_scores_zero_with_not_answered_notes(hw):
     ns = _namespace(hw, "student")
     module = HIDDEN[hw]
     for q in module.POINTS:
-        fraction, note = run_question(getattr(module, q), LocalStudent(ns))
+        fraction, note = run_question(hidden_test(hw, q), LocalStudent(ns))
         assert fraction == 0.0, f"{hw}.{q}: {fraction}"
         assert note.startswith("not answered"), f"{hw}.{q}: {note}"
 

@@ -5,6 +5,11 @@ data (``student[...]``, ``student.function(...)``) and normalizes it with ``cour
 the same code the feedback checks use.  Expected values are computed here from the question data
 with closed forms derived by hand (derivations next to them), never with course_lib's
 mathematics or the solution notebook's code.
+
+Per-student variants (issue 19): ``VARIANTS = True``, so the grader calls ``qN(student, data)``
+with the student's own data (``course_lib.variants.data("hw01", code)``: the default data
+without a course secret).  Every expected value is a generic formula of ``data``.
+:func:`answers_for` gives the worked answers of a variant (``tools/variant.py show``).
 """
 
 from __future__ import annotations
@@ -20,13 +25,84 @@ POINTS = {"q1": 2, "q2": 3, "q3": 1, "q4": 2, "q5": 2, "q6": 1, "q7": 2}
 
 QUAD_HINT = "quad returns (value, error estimate): take the first"
 
-#: The question data as stated in the notebook.  Expected values are computed from it, so a
-#: per-student variant (issue 19) can replace it without touching the tests.
-DATA = {
-    "q1": {"t": 1.0},  # c(t) = (t² + t, t³ − 2t)
-    "q4": {"u": 1.0},  # the parabola q(u) = (u, u²)
-    "q5": {"s": 0.75},  # q(f(s)) with f(s) = (s + s²)/2
-}
+VARIANTS = True
+
+#: q6: the quantities that do not depend on the parametrization (seed 000 §4): derivatives with
+#: respect to arc length.  The options are shuffled per student; the letters follow the labels.
+INTRINSIC = ("the unit tangent vector", "the curvature vector")
+
+
+def _poly(coef, x):
+    """Σ c_i x^i (coefficients in ascending powers)."""
+    return sum(c * x**i for i, c in enumerate(coef))
+
+
+def _dpoly(coef):
+    return [i * c for i, c in enumerate(coef)][1:] or [0.0]
+
+
+def _unit_tangent(d):
+    t = d["t"]
+    # x = Σ a_i t^i, y = Σ b_i t^i:  c'(t) = (Σ i a_i t^(i−1), Σ i b_i t^(i−1))
+    v = np.array([_poly(_dpoly(d["x"]), t), _poly(_dpoly(d["y"]), t)])
+    return v / math.hypot(*v)
+
+
+def _qualifies(coef):
+    """f(0) = 0, f(1) = 1 and f' > 0 on [0, 1], f of degree ≤ 3 (exact, no sampling).
+
+    f' = c1 + 2 c2 s + 3 c3 s² is a parabola in s: its minimum on [0, 1] is at an end or at
+    its vertex s* = −c2/(3 c3) when c3 > 0 and 0 < s* < 1.
+    """
+    c = list(coef) + [0.0] * (4 - len(coef))
+    if abs(c[0]) > 1e-12 or abs(sum(c) - 1) > 1e-12:
+        return False
+    candidates = [0.0, 1.0]
+    if c[3] > 0 and 0 < -c[2] / (3 * c[3]) < 1:
+        candidates.append(-c[2] / (3 * c[3]))
+    return min(c[1] + 2 * c[2] * s + 3 * c[3] * s * s for s in candidates) > 0
+
+
+def _right_letters_q3(d):
+    return ",".join(x for x, coef in sorted(d["coefficients"].items()) if _qualifies(coef))
+
+
+def _right_letters_q6(d):
+    return ",".join(x for x, label in sorted(d["options"].items()) if label in INTRINSIC)
+
+
+def _kappa(d):
+    k, u = d["k"], d["u"]
+    # (u, k u²) has velocity (1, 2ku) and acceleration (0, 2k); det = 2k, so
+    # κ(u) = 2k / (1 + 4k²u²)^(3/2) (the sign of k: left or right turn)
+    return 2 * k / (1 + 4 * k * k * u * u) ** 1.5
+
+
+def _second_derivative(d):
+    k, s, c = d["k"], d["s"], d["f"]
+    # q(f(s)) = (f, k f²):  x'' = f'',  y'' = 2k f'² + 2k f f''  (f = c0 + c1 s + c2 s²)
+    f = c[0] + c[1] * s + c[2] * s * s
+    f1, f2 = c[1] + 2 * c[2] * s, 2 * c[2]
+    return np.array([f2, 2 * k * f1 * f1 + 2 * k * f * f2])
+
+
+def _arc_length(d):
+    k, b = abs(d["k"]), d["b"]
+    # ∫_0^b sqrt(1 + 4k²u²) du; with 2ku = sinh z: [u sqrt(1 + 4k²u²)/2 + asinh(2ku)/(4k)]_0^b
+    return b * math.sqrt(1 + 4 * k * k * b * b) / 2 + math.asinh(2 * k * b) / (4 * k)
+
+
+def answers_for(data):
+    """The worked answers of a variant (for office hours: ``tools/variant.py show``)."""
+    return {
+        "answer_q1": _unit_tangent(data["q1"]).tolist(),
+        "chain_rule_derivatives": "[q'(f) f', q''(f) f'² + q'(f) f''] (any data)",
+        "answer_q3": _right_letters_q3(data["q3"]),
+        "answer_q4": _kappa(data["q4"]),
+        "answer_q5": _second_derivative(data["q5"]).tolist(),
+        "answer_q6": _right_letters_q6(data["q6"]),
+        "answer_q7": _arc_length(data["q7"]),
+    }
 
 
 def _composite_a(s):
@@ -52,14 +128,12 @@ def _composite_b(s):
 Q2_CASES = [(_composite_a, 0.7), (_composite_b, 1.3)]
 
 
-def q1(student):
+def q1(student, data):
     T = answers.array(student["answer_q1"], (2,), "answer_q1", "a plane vector")
-    t = DATA["q1"]["t"]
-    c1 = np.array([2 * t + 1, 3 * t * t - 2])  # c'(t) = (2t + 1, 3t² − 2); c'(1) = (3, 1)
-    assert answers.close(T, c1 / math.hypot(*c1)), "T(1) is wrong"  # (3, 1)/√10
+    assert answers.close(T, _unit_tangent(data["q1"])), f"T({data['q1']['t']:g}) is wrong"
 
 
-def q2(student):
+def q2(student, data):
     func = student.function("chain_rule_derivatives")
 
     def case(composite, s):
@@ -73,33 +147,26 @@ def q2(student):
     return answers.partial_credit([case(c, s) for c, s in Q2_CASES])
 
 
-def q3(student):
+def q3(student, data):
     letters = answers.choice(student["answer_q3"], "abcd", "answer_q3", single=True)
-    assert letters == "d", "wrong choice"
+    assert letters == _right_letters_q3(data["q3"]), "wrong choice"
 
 
-def q4(student):
-    u = DATA["q4"]["u"]
-    # q' = (1, 2u), q'' = (0, 2): κ = det(q', q'')/‖q'‖³ = 2/(1 + 4u²)^(3/2); at u = 1: 2/5^(3/2)
+def q4(student, data):
     kappa = answers.number(student["answer_q4"], "answer_q4")
-    assert answers.close(kappa, 2 / (1 + 4 * u * u) ** 1.5), "κ(1) is wrong"
+    assert answers.close(kappa, _kappa(data["q4"])), f"κ({data['q4']['u']:g}) is wrong"
 
 
-def q5(student):
-    s = DATA["q5"]["s"]
-    # q(f(s)) = (f, f²): x'' = f'' = 1, y'' = 2 f'² + 2 f f''; f = (s + s²)/2, f' = (1 + 2s)/2.
-    # At s = 3/4: f = 21/32, f' = 5/4, so y'' = 25/8 + 21/16 = 71/16.
-    f, f1 = (s + s * s) / 2, (1 + 2 * s) / 2
+def q5(student, data):
     v = answers.array(student["answer_q5"], (2,), "answer_q5", "a plane vector")
-    assert answers.close(v, [1.0, 2 * f1 * f1 + 2 * f]), "q̃''(3/4) is wrong"
+    assert answers.close(v, _second_derivative(data["q5"])), f"q̃''({data['q5']['s']:g}) is wrong"
 
 
-def q6(student):
-    assert answers.choice(student["answer_q6"], "abcde", "answer_q6") == "b,d", "wrong choice"
+def q6(student, data):
+    letters = answers.choice(student["answer_q6"], "abcde", "answer_q6")
+    assert letters == _right_letters_q6(data["q6"]), "wrong choice"
 
 
-def q7(student):
-    # ∫_0^1 sqrt(1 + 4u²) du = [u sqrt(1 + 4u²)/2 + asinh(2u)/4]_0^1 = (2√5 + asinh 2)/4
-    expected = (2 * math.sqrt(5) + math.asinh(2)) / 4
+def q7(student, data):
     length = answers.number(student["answer_q7"], "answer_q7", QUAD_HINT)
-    assert math.isclose(length, expected, rel_tol=1e-6), "the arc length is wrong"
+    assert math.isclose(length, _arc_length(data["q7"]), rel_tol=1e-6), "the arc length is wrong"

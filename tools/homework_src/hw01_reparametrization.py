@@ -23,6 +23,11 @@
 # The checks are feedback, not the grade: the grade comes from other tests with other data, so
 # write code that works in general. Keep the names (`answer_q1`, `chain_rule_derivatives`, ...),
 # do not delete cells, and before you hand in run *Kernel → Restart Kernel and Run All Cells*.
+#
+# **Your own data.** Every student gets their own numbers: paste the *variant code* your
+# instructor gave you into `VARIANT` below. The cells marked "your data" print the data of each
+# question; your code should use `DATA[...]` rather than typing the numbers. With `VARIANT = ""`
+# you get the example data (fine for practice, but graded on your own data it scores nothing).
 
 # %% [markdown]
 # ## Preparations
@@ -30,22 +35,32 @@
 # %%
 import numpy as np
 import sympy as sp
+from numpy.polynomial import polynomial as P
 from scipy.integrate import quad
 
+from course_lib import variants
 from course_lib.checks import check, check_all
 
 HOMEWORK = "hw01"
+VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "ABCDE23456"
+DATA = variants.data(HOMEWORK, VARIANT)
 
 # %% [markdown]
 # ## Question 1 — a unit tangent (compute)
 #
-# The plane curve $\mathbf c(t) = (t^2 + t,\ t^3 - 2t)$ is traced for increasing $t$.
-# Compute its unit tangent $\mathbf T(1) = \mathbf c'(1) / \lVert \mathbf c'(1) \rVert$
-# (seed 004 §19.2) as a numpy array of shape `(2,)`.
+# The plane curve $\mathbf c(t) = (x(t), y(t))$ of your data (printed below) is traced for
+# increasing $t$. Compute its unit tangent $\mathbf T(t_0) = \mathbf c'(t_0) / \lVert \mathbf
+# c'(t_0) \rVert$ at the point $t_0$ of your data (seed 004 §19.2) as a numpy array of shape
+# `(2,)`. `DATA["q1"]` also holds the coefficients of $x$ and $y$ in ascending powers of $t$
+# (for `numpy.polynomial.polynomial`, imported as `P`) and `t`.
+
+# %%
+print(DATA["q1"]["text"])  # your data
 
 # %%
 ### BEGIN SOLUTION
-c1 = np.array([2 * 1 + 1, 3 * 1**2 - 2], dtype=float)  # c'(t) = (2t + 1, 3t² − 2)
+d = DATA["q1"]
+c1 = np.array([P.polyval(d["t"], P.polyder(d["x"])), P.polyval(d["t"], P.polyder(d["y"]))])
 answer_q1 = c1 / np.linalg.norm(c1)
 ### END SOLUTION
 ### STUDENT answer_q1 = ...
@@ -81,15 +96,25 @@ check("hw01.q2", chain_rule_derivatives)
 #
 # Seed 000 §4 asks of an *orientation-preserving change of variables* $f$ from $[0, 1]$ onto
 # $[0, 1]$: it is regular and $C^n$, it maps the interval **onto** the interval, and $f' > 0$.
-# Which one qualifies?
-#
-# (a) $f(s) = s^2$  (b) $f(s) = 1 - s$  (c) $f(s) = 2s$  (d) $f(s) = (s + s^2)/2$
+# Which one of the four options of your data qualifies?
 #
 # Answer with a letter, e.g. `answer_q3 = "a"`.
 
 # %%
+print(DATA["q3"]["text"])  # your data
+
+# %%
 ### BEGIN SOLUTION
-answer_q3 = "d"
+s_ = sp.Symbol("s")
+
+
+def qualifies(coef):  # f(0) = 0, f(1) = 1, and f' > 0 on [0, 1]
+    f = sum(c * s_**i for i, c in enumerate(map(sp.nsimplify, coef)))
+    ends = f.subs(s_, 0) == 0 and f.subs(s_, 1) == 1
+    return ends and sp.minimum(f.diff(s_), s_, sp.Interval(0, 1)) > 0
+
+
+answer_q3 = "".join(x for x, coef in DATA["q3"]["coefficients"].items() if qualifies(coef))
 ### END SOLUTION
 ### STUDENT answer_q3 = ...
 
@@ -97,24 +122,29 @@ answer_q3 = "d"
 check("hw01.q3", answer_q3)
 
 # %% [markdown] solution
-# (a) has $f'(0) = 0$: not regular at $s = 0$. (b) has $f' = -1 < 0$: it reverses the orientation.
-# (c) maps $[0, 1]$ onto $[0, 2]$. (d) has $f(0) = 0$, $f(1) = 1$ and $f'(s) = (1 + 2s)/2 > 0$.
+# With the example data: (a) $s^2$ has $f'(0) = 0$: not regular at $s = 0$. (b) $1 - s$ has
+# $f' = -1 < 0$: it reverses the orientation. (c) $2s$ maps $[0, 1]$ onto $[0, 2]$. (d) has
+# $f(0) = 0$, $f(1) = 1$ and $f'(s) = (1 + 2s)/2 > 0$. Every variant has one option of each kind.
 
 # %% [markdown]
 # ## Question 4 — a signed curvature (derive with sympy)
 #
-# For the parabola $\mathbf q(u) = (u, u^2)$, use sympy to compute the signed curvature
-# $\kappa = \det(\mathbf q', \mathbf q'') / \lVert \mathbf q' \rVert^3$ (seed 004 §19.2: positive
-# when the curve turns towards $\mathbf N$, i.e. to the left) at $u = 1$. An exact sympy number or
-# a float are both fine.
+# For the parabola $\mathbf q(u) = (u, k u^2)$ of your data, use sympy to compute the signed
+# curvature $\kappa = \det(\mathbf q', \mathbf q'') / \lVert \mathbf q' \rVert^3$ (seed 004 §19.2:
+# positive when the curve turns towards $\mathbf N$, i.e. to the left) at the point $u_0$ of your
+# data (`DATA["q4"]["k"]`, `DATA["q4"]["u"]`). An exact sympy number or a float are both fine.
+
+# %%
+print(DATA["q4"]["text"])  # your data
 
 # %%
 ### BEGIN SOLUTION
 u = sp.Symbol("u", real=True)
-q = sp.Matrix([u, u**2])
+k = sp.nsimplify(DATA["q4"]["k"])
+q = sp.Matrix([u, k * u**2])
 dq, ddq = q.diff(u), q.diff(u, 2)
 kappa = (dq[0] * ddq[1] - dq[1] * ddq[0]) / dq.dot(dq) ** sp.Rational(3, 2)
-answer_q4 = sp.simplify(kappa.subs(u, 1))
+answer_q4 = sp.simplify(kappa.subs(u, sp.nsimplify(DATA["q4"]["u"])))
 ### END SOLUTION
 ### STUDENT answer_q4 = ...
 answer_q4
@@ -125,18 +155,25 @@ check("hw01.q4", answer_q4)
 # %% [markdown]
 # ## Question 5 — reparametrize the parabola (compute)
 #
-# Reparametrize the parabola of question 4 by the change of variables $f(s) = (s + s^2)/2$ of
-# question 3: $\tilde{\mathbf q}(s) = \mathbf q(f(s))$. Compute $\tilde{\mathbf q}''(3/4)$ (shape
-# `(2,)`), for instance with your `chain_rule_derivatives`.
+# Reparametrize the parabola $\mathbf q(u) = (u, k u^2)$ of question 4 by the change of
+# variables $f$ of your data (a change of variables as in question 3): $\tilde{\mathbf q}(s) =
+# \mathbf q(f(s))$. Compute $\tilde{\mathbf q}''(s_0)$ at the point $s_0$ of your data (shape
+# `(2,)`), for instance with your `chain_rule_derivatives`. `DATA["q5"]` holds `k`, the
+# coefficients `f` of $f$ in ascending powers of $s$, and `s`.
+
+# %%
+print(DATA["q5"]["text"])  # your data
 
 # %%
 ### BEGIN SOLUTION
-s = 0.75
-f, f1, f2 = (s + s**2) / 2, (1 + 2 * s) / 2, 1.0
-answer_q5 = chain_rule_derivatives(np.array([1.0, 2 * f]), np.array([0.0, 2.0]), f1, f2)[1]
+d = DATA["q5"]
+s, k, fc = d["s"], d["k"], d["f"]
+f, f1, f2 = P.polyval(s, fc), P.polyval(s, P.polyder(fc)), P.polyval(s, P.polyder(fc, 2))
+answer_q5 = chain_rule_derivatives(np.array([1.0, 2 * k * f]), np.array([0.0, 2 * k]), f1, f2)[1]
 # the same by differentiating q(f(s)) directly with sympy:
 s_ = sp.Symbol("s")
-direct = sp.Matrix([(s_ + s_**2) / 2, ((s_ + s_**2) / 2) ** 2]).diff(s_, 2).subs(s_, sp.Rational(3, 4))
+fs = sum(c * s_**i for i, c in enumerate(map(sp.nsimplify, fc)))
+direct = sp.Matrix([fs, sp.nsimplify(k) * fs**2]).diff(s_, 2).subs(s_, sp.nsimplify(s))
 assert np.allclose(answer_q5, np.array(direct, dtype=float).ravel())
 ### END SOLUTION
 ### STUDENT answer_q5 = ...
@@ -148,16 +185,17 @@ check("hw01.q5", answer_q5)
 # ## Question 6 — what belongs to the curve? (multiple choice, several answers)
 #
 # Which of these quantities are *intrinsic* — the same for every equivalent parametrization at the
-# same point of the curve (seed 000 §4)?
-#
-# (a) the first derivative vector  (b) the unit tangent vector  (c) the speed
-# $\lVert \mathbf q' \rVert$  (d) the curvature vector  (e) the second derivative vector
+# same point of the curve (seed 000 §4)? The options are in your data, in your own order.
 #
 # Answer with all right letters, e.g. `answer_q6 = "a, c"`.
 
 # %%
+print(DATA["q6"]["text"])  # your data
+
+# %%
 ### BEGIN SOLUTION
-answer_q6 = "b, d"
+intrinsic = {"the unit tangent vector", "the curvature vector"}
+answer_q6 = ", ".join(x for x, label in DATA["q6"]["options"].items() if label in intrinsic)
 ### END SOLUTION
 ### STUDENT answer_q6 = ...
 
@@ -172,12 +210,17 @@ check("hw01.q6", answer_q6)
 # %% [markdown]
 # ## Question 7 — an arc length (compute)
 #
-# Compute the length of the parabola $\mathbf q(u) = (u, u^2)$, $0 \le u \le 1$: the integral of
-# the speed $\lVert \mathbf q'(u) \rVert$ (seed 004 §19.2). A numerical integral is fine.
+# Compute the length of the parabola $\mathbf q(u) = (u, k u^2)$, $0 \le u \le b$, of your data
+# (`DATA["q7"]["k"]`, `DATA["q7"]["b"]`): the integral of the speed $\lVert \mathbf q'(u)
+# \rVert$ (seed 004 §19.2). A numerical integral is fine.
+
+# %%
+print(DATA["q7"]["text"])  # your data
 
 # %%
 ### BEGIN SOLUTION
-answer_q7, _error = quad(lambda u: np.hypot(1.0, 2.0 * u), 0.0, 1.0)
+k, b = DATA["q7"]["k"], DATA["q7"]["b"]
+answer_q7, _error = quad(lambda u: np.hypot(1.0, 2.0 * k * u), 0.0, b)
 ### END SOLUTION
 ### STUDENT answer_q7 = ...
 

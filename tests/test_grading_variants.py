@@ -1,0 +1,89 @@
+"""Per-student variants through the real sandboxed grader (issue 19), end to end.
+
+Three students hand in the hw01 solution notebook: two with their own variant code in
+``VARIANT``, one with a friend's code.  ``tools/grade.py --secret-file --roster`` recomputes each
+code from the roster's id and grades on that student's own data: the two honest submissions get
+full marks, the borrowed code does not.
+"""
+
+from __future__ import annotations
+
+import csv
+import importlib.util
+import sys
+from pathlib import Path
+
+import nbformat
+import pytest
+
+from course_lib import variants
+
+ROOT = Path(__file__).resolve().parents[1]
+HIDDEN = ROOT / "solutions" / "hidden_tests" / "hw01.py"
+SOLUTION = ROOT / "solutions" / "hw01_reparametrization.ipynb"
+
+spec = importlib.util.spec_from_file_location("grade_variants", ROOT / "tools" / "grade.py")
+grade = importlib.util.module_from_spec(spec)
+sys.modules["grade_variants"] = grade
+spec.loader.exec_module(grade)
+
+pytestmark = [pytest.mark.slow, pytest.mark.timeout(300)]
+
+SECRET = "a course secret for the variant test"
+
+
+def _with_variant(code: str, path: Path) -> None:
+    nb = nbformat.read(SOLUTION, as_version=4)
+    (cell,) = [c for c in nb.cells if c.cell_type == "code" and 'VARIANT = ""' in c.source]
+    cell.source = cell.source.replace('VARIANT = ""', f'VARIANT = "{code}"', 1)
+    nbformat.write(nb, path)
+
+
+@pytest.fixture(scope="module")
+def graded(tmp_path_factory):
+    root = tmp_path_factory.mktemp("course")
+    secret = root / "course_secret.txt"
+    secret.write_text(SECRET + "\n", encoding="utf-8")
+    roster = root / "roster.csv"
+    roster.write_text(
+        "id,submission,name,email\n"
+        "1001,s001,Ada,ada@example.org\n1002,s002,Emmy,emmy@example.org\n1003,s003,Sophie,s@example.org\n",
+        encoding="utf-8",
+    )
+    codes = {i: variants.code_for(SECRET, "hw01", i) for i in ("1001", "1002", "1003")}
+    subs = root / "submissions"
+    subs.mkdir()
+    _with_variant(codes["1001"], subs / "s001.ipynb")
+    _with_variant(codes["1002"], subs / "s002.ipynb")
+    _with_variant(codes["1001"], subs / "s003.ipynb")  # Sophie used Ada's code
+    out = root / "grades"
+    code = grade.main(
+        ["--tests", str(HIDDEN), "--submissions", str(subs), "--out", str(out), "--roster", str(roster),
+         "--secret-file", str(secret), "--jobs", "2", "--sandbox", "auto"]
+    )  # fmt: skip
+    variants.data("hw01", variants.DEFAULT)
+    with open(out / "scores.csv", newline="", encoding="utf-8") as fh:
+        rows = {r["student"]: r for r in csv.DictReader(fh)}
+    return {"code": code, "rows": rows, "out": out, "codes": codes}
+
+
+def test_each_student_is_graded_on_their_own_variant(graded):
+    assert graded["code"] == 0
+    rows = graded["rows"]
+    assert float(rows["s001"]["total"]) == 13 and float(rows["s002"]["total"]) == 13
+    feedback = (graded["out"] / "feedback" / "s001.md").read_text(encoding="utf-8")
+    assert f"variant {graded['codes']['1001']}" in feedback
+
+
+def test_a_friends_code_does_not_earn_full_marks(graded):
+    row = graded["rows"]["s003"]
+    assert float(row["total"]) < 13
+    # the data questions are answered for Ada's data, not Sophie's; the function question is
+    # the same for everyone
+    assert float(row["q2"]) == 3
+    assert all(float(row[q]) == 0 for q in ("q1", "q4", "q5", "q7"))
+
+
+def test_the_batch_ran_in_the_sandbox_where_it_works(graded):
+    mode, _ = grade.resolve_sandbox("auto")
+    assert {r["sandbox"] for r in graded["rows"].values()} == {mode}

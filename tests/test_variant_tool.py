@@ -1,0 +1,89 @@
+"""``tools/variant.py``: the course secret, the codes for the LMS, a student's data and answers."""
+
+from __future__ import annotations
+
+import ast
+import csv
+import importlib.util
+import io
+import stat
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from course_lib import variants
+
+ROOT = Path(__file__).resolve().parents[1]
+spec = importlib.util.spec_from_file_location("variant_tool", ROOT / "tools" / "variant.py")
+tool = importlib.util.module_from_spec(spec)
+sys.modules["variant_tool"] = tool
+spec.loader.exec_module(tool)
+
+
+@pytest.fixture(autouse=True)
+def _default_afterwards():
+    yield
+    variants.data("hw01", variants.DEFAULT)
+
+
+@pytest.fixture
+def secret(tmp_path):
+    path = tmp_path / "course_secret.txt"
+    assert tool.main(["secret", "--out", str(path)]) == 0
+    return path
+
+
+def test_secret_is_private_random_and_never_overwritten(secret, tmp_path, capsys):
+    assert stat.S_IMODE(secret.stat().st_mode) == 0o600
+    text = secret.read_bytes()
+    assert len(text.strip()) >= 40
+    with pytest.raises(SystemExit, match="not overwritten"):
+        tool.main(["secret", "--out", str(secret)])
+    assert secret.read_bytes() == text
+    other = tmp_path / "other.txt"
+    tool.main(["secret", "--out", str(other)])
+    assert other.read_bytes() != text
+
+
+def test_codes_for_the_lms_are_the_codes_the_grader_computes(secret, tmp_path, capsys):
+    roster = tmp_path / "roster.csv"
+    roster.write_text(
+        'id,submission,name,email\n1001,s001,"Lovelace, Ada",ada@example.org\n1002,s002,Emmy,e@example.org\n',
+        encoding="utf-8",
+    )
+    capsys.readouterr()
+    assert tool.main(["codes", "hw01", "--secret-file", str(secret), "--roster", str(roster)]) == 0
+    rows = list(csv.DictReader(io.StringIO(capsys.readouterr().out)))
+    key = secret.read_bytes().strip()
+    assert [r["id"] for r in rows] == ["1001", "1002"] and rows[0]["name"] == "Lovelace, Ada"
+    assert rows[0]["code"] == variants.code_for(key, "hw01", "1001")  # by the LMS id
+    assert rows[0]["code"] != rows[1]["code"]
+    out = tmp_path / "codes.csv"
+    tool.main(["codes", "hw01", "--secret-file", str(secret), "--roster", str(roster), "--out", str(out)])
+    assert list(csv.DictReader(out.open(encoding="utf-8"))) == rows
+    with pytest.raises(SystemExit, match="hw02 has no variants"):
+        tool.main(["codes", "hw02", "--secret-file", str(secret), "--roster", str(roster)])
+    short = tmp_path / "short.txt"
+    short.write_text("abc")
+    with pytest.raises(SystemExit, match="too short"):
+        tool.main(["codes", "hw01", "--secret-file", str(short), "--roster", str(roster)])
+
+
+def test_show_prints_the_students_data_and_worked_answers(secret, capsys):
+    capsys.readouterr()
+    assert tool.main(["show", "hw01", "1001", "--secret-file", str(secret)]) == 0
+    text = capsys.readouterr().out
+    code = variants.code_for(secret.read_bytes().strip(), "hw01", "1001")
+    data = variants.data("hw01", code)
+    assert f"VARIANT = {code!r}" in text
+    assert data["q1"]["text"] in text and data["q5"]["text"] in text
+    assert "Worked answers:" in text and "answer_q7 = " in text
+    # the worked unit tangent is the one of the student's curve: c'(t0) normalized, by hand
+    d = data["q1"]
+    t = d["t"]
+    c1 = np.array([d["x"][1] + 2 * d["x"][2] * t, d["y"][1] + 3 * d["y"][3] * t * t])
+    line = next(x for x in text.splitlines() if "answer_q1 =" in x)
+    got = np.array(ast.literal_eval(line.split("=", 1)[1].strip()))
+    assert np.allclose(got, c1 / np.linalg.norm(c1))

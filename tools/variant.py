@@ -1,0 +1,157 @@
+#!/usr/bin/env python3
+"""Per-student homework variants, the instructor's side (issue 19; ``course_lib.variants``).
+
+Usage::
+
+    python tools/variant.py secret [--out course_secret.txt]
+        # once per course: a new random course secret, file mode 0600 (never overwrites one).
+        # Keep it out of the repository and away from students; it makes and checks the codes.
+    python tools/variant.py codes hw01 --secret-file course_secret.txt --roster roster.csv [--out codes.csv]
+        # every student's variant code as CSV (id,name,email,code) for the LMS: mail merge,
+        # a column in the gradebook, ... Each student pastes their code into VARIANT = "...".
+    python tools/variant.py show hw01 STUDENT --secret-file course_secret.txt
+        # office hours: the student's code, their data and the worked answers
+        # (``answers_for(data)`` of the hidden tests, solutions/hidden_tests/hw01.py)
+
+``STUDENT`` and the roster's ``id`` column are the ids the grader computes codes from
+(``tools/grade.py --secret-file --roster``: the roster's ``id`` of a submission, else the
+submission's name).
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import importlib.util
+import io
+import json
+import os
+import secrets
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+sys.path.insert(0, str(ROOT))
+
+from grading import reports  # noqa: E402
+
+from course_lib import variants  # noqa: E402
+
+DEFAULT_SECRET = Path("course_secret.txt")
+
+
+def make_secret(out: Path) -> Path:
+    """Write a new course secret to ``out`` (mode 0600); refuse to overwrite an existing file."""
+    text = secrets.token_urlsafe(32) + "\n"
+    try:
+        fd = os.open(out, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
+    except FileExistsError:
+        raise SystemExit(
+            f"{out} exists: not overwritten (a new secret would change every student's code)"
+        ) from None
+    with os.fdopen(fd, "w", encoding="ascii") as fh:
+        fh.write(text)
+    os.chmod(out, 0o600)
+    return out
+
+
+def read_secret(path: Path) -> bytes:
+    try:
+        secret = Path(path).read_bytes().strip()
+    except OSError as exc:
+        raise SystemExit(f"--secret-file {path}: {exc.strerror}") from None
+    if len(secret) < 16:
+        raise SystemExit(f"--secret-file {path}: too short (make one with tools/variant.py secret)")
+    return secret
+
+
+def _homework(hw: str) -> str:
+    known = sorted(variants.generators())
+    if hw not in known:
+        raise SystemExit(f"{hw} has no variants (homeworks with variants: {', '.join(known) or 'none'})")
+    return hw
+
+
+def codes_csv(hw: str, secret: bytes, roster: dict) -> str:
+    """``id,name,email,code`` for every roster entry (codes by the LMS id, as the grader makes them)."""
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(["id", "name", "email", "code"])
+    for entry in roster.values():
+        w.writerow([entry.id, entry.name, entry.email, variants.code_for(secret, hw, entry.id)])
+    return buf.getvalue()
+
+
+def load_hidden(hw: str, path: Path | None = None):
+    path = Path(path) if path else ROOT / "solutions" / "hidden_tests" / f"{hw}.py"
+    if not path.is_file():
+        raise SystemExit(f"no hidden tests at {path} (give --tests)")
+    spec = importlib.util.spec_from_file_location(f"hidden_{hw}_variant_tool", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def _plain(value):
+    if hasattr(value, "tolist"):
+        return value.tolist()
+    return value
+
+
+def show(hw: str, student: str, secret: bytes, tests: Path | None = None) -> str:
+    """The student's code, data (as printed in their notebook) and worked answers."""
+    code = variants.code_for(secret, hw, student)
+    data = variants.data(hw, code)
+    lines = [f"{hw} for {student}: VARIANT = {code!r}", "", "Data:"]
+    for q, d in data.items():
+        text = d.get("text") if isinstance(d, dict) else None
+        body = text if text else json.dumps(d, ensure_ascii=False)
+        lines.append(f"  {q}: " + body.replace("\n", "\n      "))
+    module = load_hidden(hw, tests)
+    worked = getattr(module, "answers_for", None)
+    if worked is None:
+        lines += ["", f"(no answers_for(data) in the hidden tests of {hw})"]
+    else:
+        lines += ["", "Worked answers:"]
+        lines += [f"  {name} = {_plain(v)!r}" for name, v in worked(data).items()]
+    return "\n".join(lines) + "\n"
+
+
+def main(argv: list[str] | None = None) -> int:
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    sub = p.add_subparsers(dest="command", required=True)
+    s = sub.add_parser("secret", help="create a course secret file (mode 0600)")
+    s.add_argument("--out", type=Path, default=DEFAULT_SECRET)
+    c = sub.add_parser("codes", help="every student's code, CSV id,name,email,code")
+    c.add_argument("homework")
+    c.add_argument("--secret-file", type=Path, required=True)
+    c.add_argument("--roster", type=Path, required=True, help="CSV with an id column (as for tools/grade.py)")
+    c.add_argument("--out", type=Path, help="write the CSV here (default: print it)")
+    w = sub.add_parser("show", help="a student's code, data and worked answers")
+    w.add_argument("homework")
+    w.add_argument("student", help="the student's id (the roster's id)")
+    w.add_argument("--secret-file", type=Path, required=True)
+    w.add_argument("--tests", type=Path, help="hidden tests (default solutions/hidden_tests/HW.py)")
+    args = p.parse_args(argv)
+
+    if args.command == "secret":
+        out = make_secret(args.out)
+        print(f"wrote a new course secret to {out} (mode 0600): keep it out of git and from students")
+        return 0
+    hw = _homework(args.homework)
+    secret = read_secret(args.secret_file)
+    if args.command == "codes":
+        text = codes_csv(hw, secret, reports.read_roster(args.roster))
+        if args.out:
+            args.out.write_text(text, encoding="utf-8")
+            print(f"wrote {text.count(chr(10)) - 1} codes to {args.out}")
+        else:
+            sys.stdout.write(text)
+        return 0
+    sys.stdout.write(show(hw, args.student, secret, args.tests))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
