@@ -82,6 +82,11 @@ def test_a_friends_code_does_not_earn_full_marks(graded):
     # the same for everyone
     assert float(row["q2"]) == 3
     assert all(float(row[q]) == 0 for q in ("q1", "q4", "q5", "q7"))
+    # and the feedback says why
+    text = (graded["out"] / "feedback" / "s003.md").read_text(encoding="utf-8")
+    assert f"but your variant code is {graded['codes']['1003']}" in text
+    ada = (graded["out"] / "feedback" / "s001.md").read_text(encoding="utf-8")
+    assert "but your variant code is" not in ada
 
 
 def test_the_batch_ran_in_the_sandbox_where_it_works(graded):

@@ -442,6 +442,22 @@ def _jobs_base() -> Path:
     return base
 
 
+def _note_variant_mismatch(session, timeout: float, variant: str, result: Result) -> None:
+    """Tell a student whose notebook used another variant code (or none) why answers fail."""
+    try:
+        used = protocol.Student(session.transport(timeout))["VARIANT"]
+    except Exception:  # no VARIANT, a broken notebook: the questions will say what is wrong
+        return
+    mine = variant.upper()
+    theirs = used.strip().upper().replace("-", "").replace(" ", "") if isinstance(used, str) else None
+    if theirs != mine:
+        shown = f"code {used!r}" if theirs else "no code (the data printed in the notebook)"
+        result.run_notes.append(
+            f"your notebook used {shown}, but your variant code is {mine}: you were graded on "
+            "your own data, so answers computed for other data are wrong"
+        )
+
+
 def grade_notebook(
     path: Path,
     tests: HiddenTests,
@@ -493,6 +509,8 @@ def grade_notebook(
     try:
         (job / "submission.ipynb").write_bytes(path.read_bytes())  # the kernel's working copy
         session.ensure()
+        if variant_data is not None and variant:
+            _note_variant_mismatch(session, question_timeout, variant, result)
         for q in questions:
             if session.broken == "time limit":
                 result.notes[q] = "not graded: the overall time limit was reached"
