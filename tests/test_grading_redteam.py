@@ -89,6 +89,7 @@ def batch(tmp_path_factory):
     shutil.copyfile(SOLUTION, subs / "carol" / "second.ipynb")
     os.utime(subs / "carol" / "first.ipynb", (1_000_000_000, 1_000_000_000))
 
+    groups_before = _cgroups()
     files = sorted(p for p in subs.rglob("*") if p.is_file())
     before = {p: hashlib.sha256(p.read_bytes()).hexdigest() for p in files}
     out = tmp_path_factory.mktemp("grades")
@@ -104,7 +105,8 @@ def batch(tmp_path_factory):
     with open(out / "scores.csv", newline="", encoding="utf-8") as fh:
         rows = {r["student"]: r for r in csv.DictReader(fh)}
     return {"code": code, "subs": subs, "out": out, "before": before, "after": after,
-            "rows": rows, "survivors": _marker_processes()}  # fmt: skip
+            "rows": rows, "survivors": _marker_processes(),
+            "new_cgroups": _cgroups() - groups_before}  # fmt: skip
 
 
 def test_batch_finishes_with_a_row_for_everyone(batch):
@@ -138,6 +140,12 @@ def test_nothing_outside_the_sandbox_changed(batch):
 
 def test_no_process_outlives_the_grader(batch):
     assert batch["survivors"] == []
+    assert batch["new_cgroups"] == set()  # each sandbox's pids group was removed
+
+
+def _cgroups() -> set[str]:
+    base = Path("/sys/fs/cgroup/pids")
+    return {p.name for p in base.glob("course-grader-*")} if base.is_dir() else set()
 
 
 def test_names_are_unique_and_duplicates_flagged(batch):

@@ -26,6 +26,7 @@ import os
 import shutil
 import subprocess
 import sys
+import time
 import uuid
 from dataclasses import asdict, dataclass
 from pathlib import Path
@@ -201,18 +202,26 @@ class ProcessGroupLimit:
             self.path = path
             return
 
-    def kill_and_remove(self) -> None:
+    def kill_and_remove(self, wait: float = 3.0) -> None:
+        """Kill whatever is left in the group and remove it (once the kernel has reaped it)."""
         if self.path is None:
             return
-        try:
-            for pid in _read(self.path / "cgroup.procs").split():
+        deadline = time.monotonic() + wait
+        while True:
+            pids = _read(self.path / "cgroup.procs").split()
+            for pid in pids:
                 try:
                     os.kill(int(pid), 9)
                 except (OSError, ValueError):
                     pass
-            self.path.rmdir()
-        except OSError:
-            pass
+            try:
+                self.path.rmdir()
+                self.path = None
+                return
+            except OSError:
+                if time.monotonic() > deadline:
+                    return  # still busy: an empty group costs nothing; never block the batch
+                time.sleep(0.05)
 
 
 def _read(path: Path) -> str:
