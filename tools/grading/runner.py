@@ -15,6 +15,7 @@ import os
 import secrets
 import shutil
 import signal
+import stat
 import subprocess
 import tempfile
 import time
@@ -401,13 +402,35 @@ class _Session:
 
 
 def _read_limited(path: Path, limit: int) -> bytes | None:
+    """At most ``limit`` bytes of a response file the student's code could have tampered with.
+
+    Only a regular file is read: never a symlink (it would be followed outside the sandbox),
+    a FIFO (it would block the grader) or a device.
+    """
+    flags = os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0)
     try:
-        with open(path, "rb") as fh:
-            data = fh.read(limit)
-        path.unlink()
-        return data
+        fd = os.open(path, flags)
     except OSError:
         return None
+    try:
+        if not stat.S_ISREG(os.fstat(fd).st_mode):
+            return None
+        chunks, left = [], limit
+        while left > 0:
+            chunk = os.read(fd, min(left, 1 << 20))
+            if not chunk:
+                break
+            chunks.append(chunk)
+            left -= len(chunk)
+        return b"".join(chunks)
+    except OSError:
+        return None
+    finally:
+        os.close(fd)
+        try:
+            path.unlink()
+        except OSError:
+            pass
 
 
 def _read_notebook(path: Path) -> tuple[nbformat.NotebookNode | None, str]:
