@@ -25,13 +25,24 @@ from collections.abc import Callable
 
 import numpy as np
 
-__all__ = ["DEFAULT", "code_for", "current", "data", "generators", "register", "rng_for"]
+__all__ = [
+    "DEFAULT",
+    "code_for",
+    "current",
+    "data",
+    "generators",
+    "register",
+    "register_strata",
+    "rng_for",
+    "strata",
+]
 
 DEFAULT = ""  # the code of the default data
 CODE_LENGTH = 10
 
 _GENERATORS: dict[str, Callable[[np.random.Generator | None], dict]] = {}
 _CURRENT: dict[str, dict] = {}
+_STRATA: dict[str, Callable[[dict], dict]] = {}
 
 
 def register(homework: str):
@@ -42,6 +53,30 @@ def register(homework: str):
         return fn
 
     return deco
+
+
+def register_strata(homework: str):
+    """Decorator: ``@register_strata("hw01") def strata(data) -> {qid: label}``.
+
+    A label names the kind of variant a student got for a question (which letter is right,
+    the sign of a coefficient, ...): the class summary compares success rates across labels and
+    flags a question whose variants are not equally hard.
+    """
+
+    def deco(fn):
+        _STRATA[homework] = fn
+        return fn
+
+    return deco
+
+
+def strata(homework: str, code: str) -> dict[str, str]:
+    """The labels of a variant's questions (empty where the homework declares none)."""
+    if homework not in _GENERATORS:
+        _load_all()
+    if homework not in _STRATA or homework not in _GENERATORS:
+        return {}
+    return dict(_STRATA[homework](_GENERATORS[homework](rng_for(homework, code))))
 
 
 def generators() -> dict[str, Callable]:

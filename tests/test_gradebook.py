@@ -179,3 +179,41 @@ def test_deadline_and_penalty_are_validated():
     assert late.apply(datetime.fromisoformat("2026-12-01T12:00+00:00")) == (0, 0.0)
     assert late.apply(datetime.fromisoformat("2026-12-01T12:00:01+00:00")) == (1, 0.25)
     assert late.apply(datetime.fromisoformat("2026-12-06T12:00+00:00")) == (5, 1.0)
+
+
+def test_summary_flags_a_question_whose_variants_differ_in_difficulty():
+    """Issue 19: success rates per kind of variant; a wide spread is flagged."""
+    from grading import reports
+
+    tests = grade.HiddenTests.load(HIDDEN)
+    results, labels = [], {}
+    for i in range(20):
+        easy = i % 2 == 0  # q3's right option is (a) for half the class, (b) for the others
+        points = dict(tests.points)
+        if not easy and i % 10 != 1:
+            points["q3"] = 0.0  # 2 of 10 (s01, s11) get the hard kind right, all the easy kind
+        if i % 3 == 0:
+            points["q1"] = 0.0  # q1 equally hard for every kind
+        student = f"s{i:02d}"
+        results.append(grade.Result(student, points, dict.fromkeys(points, ""), variant="X"))
+        labels[student] = {"q1": "t > 0" if i < 10 else "t < 0",
+                           "q3": "right option (a)" if easy else "right option (b)"}
+    text, data = reports.summary(results, tests, None, labels)
+    assert data["variants"]["q3"]["flagged"] and not data["variants"]["q1"]["flagged"]
+    assert data["variants"]["q3"]["rates"]["right option (b)"] == [0.2, 10]
+    assert "| q3 | right option (a): 100% (10); right option (b): 20% (10) | ⚠ |" in text
+
+
+def test_hw01_variant_kinds_name_the_right_option():
+    """The q3 label of a variant is the letter the hidden test grades as right."""
+    from course_lib import variants
+
+    hidden = grade.HiddenTests.load(HIDDEN)
+    module = {}
+    exec(compile(hidden.source, str(HIDDEN), "exec"), module)
+    for n in range(200):
+        code = variants.code_for(b"a course secret of 32 bytes......", "hw01", f"s{n}")
+        label = variants.strata("hw01", code)["q3"]
+        right = module["answers_for"](variants.data("hw01", code))["answer_q3"]
+        assert label == f"right option ({right})", (code, label, right)
+    variants.data("hw01", variants.DEFAULT)

@@ -160,6 +160,7 @@ class Reports:
     ) -> None:
         self.tests, self.out, self.fmt, self.roster, self.late = tests, out, fmt, roster, late
         self.results: dict[str, Result] = {r.student: r for r in keep or []}
+        self.labels: dict[str, dict[str, str]] = {}
         self.lock = threading.Lock()
         (out / "feedback").mkdir(parents=True, exist_ok=True)
 
@@ -193,8 +194,17 @@ class Reports:
         reports.atomic_write(
             self.out / "results.json", reports.results_json(results, self.tests, self.late)
         )
-        text, _ = reports.summary(results, self.tests, self.roster)
+        text, _ = reports.summary(results, self.tests, self.roster, self.variant_labels(results))
         reports.atomic_write(self.out / "summary.md", text)
+
+    def variant_labels(self, results: list[Result]) -> dict[str, dict[str, str]]:
+        """The kind of variant of every question of every student graded on their own data."""
+        if not self.tests.variants:
+            return {}
+        for r in results:  # each student's variant is generated once
+            if r.variant and r.student not in self.labels:
+                self.labels[r.student] = variants.strata(self.tests.homework, r.variant)
+        return {r.student: self.labels[r.student] for r in results if r.variant}
 
     def finish(self) -> None:
         with self.lock:

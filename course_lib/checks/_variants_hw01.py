@@ -177,3 +177,28 @@ def generate(rng: np.random.Generator | None) -> dict:
         "q7": {"k": float(k), "b": float(p["b"]), "text": f"{parabola},  0 ≤ u ≤ {_num(p['b'])}"},
     }  # fmt: skip
 
+
+@variants.register_strata("hw01")
+def strata(data: dict) -> dict[str, str]:
+    """What kind of variant each question is (for the class summary's difficulty check)."""
+
+    def right_q3() -> str:
+        for letter, coef in data["q3"]["coefficients"].items():
+            f = np.polynomial.Polynomial(coef)
+            s = np.linspace(0.0, 1.0, 101)
+            if abs(f(0.0)) < 1e-12 and abs(f(1.0) - 1.0) < 1e-12 and np.all(f.deriv()(s) > 0):
+                return f"right option ({letter})"
+        return "?"
+
+    intrinsic = ("the unit tangent vector", "the curvature vector")
+    q6 = ", ".join(k for k, v in data["q6"]["options"].items() if v in intrinsic)
+    k = "k > 0" if data["q4"]["k"] > 0 else "k < 0"
+    w = "w > 0" if data["q5"]["f"][2] > 0 else "w < 0"
+    return {
+        "q1": "t > 0" if data["q1"]["t"] > 0 else "t < 0",
+        "q3": right_q3(),
+        "q4": k,
+        "q5": f"{k}, {w}",
+        "q6": f"right options ({q6})",
+        "q7": k,
+    }

@@ -210,7 +210,36 @@ def feedback_markdown(r, tests, late: LatePolicy | None = None) -> str:
     return "\n".join(lines) + "\n"
 
 
-def summary(results, tests, roster: dict[str, RosterEntry] | None) -> tuple[str, dict]:
+MIN_PER_STRATUM = 5  # students per kind of variant before success rates are compared
+SPREAD_FLAG = 0.30  # flag a question whose kinds of variant differ by more than this
+
+
+def variant_spread(results, tests, labels: dict[str, dict[str, str]]) -> dict[str, dict]:
+    """Per question: full-marks rate per kind of variant, and whether they differ widely."""
+    out = {}
+    for q in tests.points:
+        groups: dict[str, list[bool]] = {}
+        for r in results:
+            label = labels.get(r.student, {}).get(q)
+            if label is not None:
+                groups.setdefault(label, []).append(r.points[q] >= tests.points[q])
+        rates = {k: (sum(v) / len(v), len(v)) for k, v in sorted(groups.items())}
+        big = [rate for rate, n in rates.values() if n >= MIN_PER_STRATUM]
+        flagged = len(big) >= 2 and max(big) - min(big) > SPREAD_FLAG
+        if rates:
+            out[q] = {
+                "rates": {k: [round(r, 3), n] for k, (r, n) in rates.items()},
+                "flagged": flagged,
+            }
+    return out
+
+
+def summary(
+    results,
+    tests,
+    roster: dict[str, RosterEntry] | None,
+    labels: dict[str, dict[str, str]] | None = None,
+) -> tuple[str, dict]:
     totals = [final_total(r) for r in results]
     rates = {
         q: (
@@ -250,6 +279,23 @@ def summary(results, tests, roster: dict[str, RosterEntry] | None) -> tuple[str,
             f"Roster students without a submission ({len(missing)}): "
             + (", ".join(missing) or "none"),
         ]
+    if labels:
+        spread = variant_spread(results, tests, labels)
+        data["variants"] = spread
+        lines += [
+            "",
+            "## Per-student variants",
+            "",
+            f"Full-marks rate per kind of variant (compared when a kind has at least "
+            f"{MIN_PER_STRATUM} students; ⚠ = kinds differ by more than "
+            f"{SPREAD_FLAG:.0%}: check that generator's variants are equally hard).",
+            "",
+            "| question | kinds of variant (rate, students) | |",
+            "|---|---|---|",
+        ]
+        for q, info in spread.items():
+            kinds = "; ".join(f"{k}: {r:.0%} ({n})" for k, (r, n) in info["rates"].items())
+            lines.append(f"| {q} | {kinds} | {'⚠' if info['flagged'] else ''} |")
     if data["unsandboxed"]:
         lines += ["", f"**{data['unsandboxed']} submissions were graded WITHOUT a sandbox.**"]
     lines += ["", "![score distribution](histogram.png)"]

@@ -105,6 +105,7 @@ class Result:
     days_late: int = 0
     penalty: float = 0.0  # fraction of the points lost for lateness
     lms: dict | None = None  # the roster entry: id, name, email
+    variant: str = ""  # the student's variant code ("" = the default data)
 
     @property
     def total(self) -> float:
@@ -525,6 +526,7 @@ def grade_notebook(
         from course_lib import variants
 
         variant_data = variants.data(tests.homework, variant)
+        result.variant = variant
         if variant:
             result.run_notes.append(f"graded on the student's own data (variant {variant})")
     job = Path(tempfile.mkdtemp(prefix="job-", dir=_jobs_base()))
