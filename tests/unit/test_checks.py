@@ -64,6 +64,15 @@ def _quadratic_beta_spline(V, b):
 
 D = np.array([[0, 0], [1, 2], [2, 3], [4, 3], [5, 1], [6, 0], [8, 1], [9, 3]], dtype=float)
 
+
+def _g2_run(V):
+    """Uniform cubic B-spline on 2V0 - V1, V0..Vn, 2Vn - Vn-1 in Bézier form, span by span."""
+    V = np.asarray(V, float)
+    E = np.vstack([2 * V[0] - V[1], V, 2 * V[-1] - V[-2]])
+    return np.array([[(a + 4 * b + c) / 6, (2 * b + c) / 3, (b + 2 * c) / 3, (b + 4 * c + d) / 6]
+                     for a, b, c, d in zip(E, E[1:], E[2:], E[3:], strict=False)])
+
+
 RIGHT = {
     "hw01.q1": np.array([3.0, 1.0]) / math.sqrt(10),  # c'(1) = (3, 1)
     "hw01.q2": _chain,
@@ -97,6 +106,16 @@ RIGHT = {
     "hw04.q4": _quadratic_beta_spline,
     "hw04.q5": np.array([3.0, 2.0]),
     "hw04.q6": "b",
+    # hw05: see tests/test_answer_equivalence.py for the derivations
+    "hw05.q1": np.array([6, 10, 5]),
+    "hw05.q2": lambda P0, A, B, P2: bool(
+        abs(np.linalg.det(np.array([np.subtract(B, A), np.subtract(P2, P0)], dtype=float)))
+        <= 1e-9 * np.linalg.norm(np.subtract(B, A)) * np.linalg.norm(np.subtract(P2, P0))
+    ),
+    "hw05.q3": np.array([-24148.0, -23862.0]) * 2048 / 40738**1.5,
+    "hw05.q4": "b",
+    "hw05.q5": _g2_run,
+    "hw05.q6": np.array([6, 4, 12]),
 }
 ALL_IDS = sorted(RIGHT)
 
@@ -250,6 +269,14 @@ TARGETED = [
     ("hw04.q1", np.array([3.0, 3.0]) + np.array([2.0, 1.0]) / 1.5, "inverted"),
     ("hw04.q1", np.array([4.0, 7.0]), "off that line"),
     ("hw04.q5", np.array([4.0, 3.0]), "swapped"),
+    ("hw05.q1", np.array([6, 15, 0]), "rel_jump"),
+    ("hw05.q1", np.array([6, 6, 1]), "one contour only"),
+    ("hw05.q1", np.array([5, 10, 6]), "wrong order"),
+    ("hw05.q3", np.array([-24148.0, -23862.0]) / 40738**1.5, "font units"),
+    ("hw05.q3", np.array([-23862.0, -24148.0]) * 2048 / 40738**1.5, "swapped"),
+    ("hw05.q3", np.array([24148.0, 23862.0]) * 2048 / 40738**1.5, "sign"),
+    ("hw05.q6", np.array([6, 0, 8]), "outer contour only"),
+    ("hw05.q6", np.array([6, 10, 5]), "original b"),
 ]
 
 
