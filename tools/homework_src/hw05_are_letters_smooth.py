@@ -201,8 +201,10 @@ check("hw05.q5", g2_run)
 #
 # Replace the bowl by `g2_run(V_bowl)` and keep the five straight lines of the stem (stored
 # points 12 → 13 → 14 → 15 → 16 → 0); keep the counter as it is. Build the new glyph as an
-# `Outline` of two closed contours (`Contour(curve, True, np.zeros(number_of_joints, bool))`)
-# and classify its joints as in question 1: `answer_q6 = [corners, G1 not G2, G2]`.
+# `Outline` of two closed contours, `Outline((counter, Contour(curve, True, flags)), "name")`
+# with `flags = np.zeros(curve.n_segments, bool)` (a closed contour has one joint per segment,
+# none of them implied now), and classify its joints as in question 1:
+# `answer_q6 = [corners, G1 not G2, G2]`.
 
 # %%
 P_outer, on_outer = b.points[1]
