@@ -13,6 +13,8 @@ import math
 import numpy as np
 import pytest
 import sympy as sp
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 
 from course_lib import checks
 from course_lib.checks import (
@@ -420,6 +422,53 @@ def test_hw04_q6_unit_shape_parameters_give_the_uniform_cubic_b_spline():
     J = (b1 * W_left_2 + W_right_1) / (1 + b1)  # step (2)
     assert sp.simplify(J - (Vm + 4 * V0 + Vp) / 6) == 0  # uniform cubic B-spline, Bézier form
     assert RIGHT["hw04.q6"] == "b"
+
+
+_GRID = st.tuples(st.integers(-2048, 2048), st.integers(-2048, 2048))
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(_GRID, min_size=2, max_size=9, unique=True))
+def test_hw05_q5_phantom_vertices_keep_the_corners_and_their_tangents(points):
+    # what hw05 q5 teaches, on run polygons of font-unit points: the cubic Beta-spline with
+    # β1 = 1, β2 = 0 on 2V0 - V1, V0..Vn, 2Vn - Vn-1 is the span-by-span Bézier form written
+    # by hand, starts at V0 along V1 - V0 with zero curvature, ends likewise, and is C2
+    from course_lib.beta_splines import cubic_beta_spline
+
+    V = np.array(points, float)
+    E = np.vstack([2 * V[0] - V[1], V, 2 * V[-1] - V[-2]])
+    W = np.array(cubic_beta_spline(E, 1.0, 0.0).segments)
+    assert W.shape == (len(V) - 1, 4, 2)
+    assert np.allclose(W, _g2_run(V), rtol=0, atol=1e-9)
+    assert np.allclose(W[0, 0], V[0], rtol=0, atol=1e-9) and np.allclose(W[-1, -1], V[-1], rtol=0, atol=1e-9)
+    assert np.allclose(3 * (W[0, 1] - W[0, 0]), V[1] - V[0], rtol=0, atol=1e-9)
+    assert np.allclose(3 * (W[-1, -1] - W[-1, -2]), V[-1] - V[-2], rtol=0, atol=1e-9)
+    assert np.allclose(W[0, 2] - 2 * W[0, 1] + W[0, 0], 0, atol=1e-9)
+    assert np.allclose(W[:-1, 3], W[1:, 0], rtol=0, atol=1e-9)
+    assert np.allclose(W[:-1, 3] - W[:-1, 2], W[1:, 1] - W[1:, 0], rtol=0, atol=1e-9)
+    assert np.allclose(W[:-1, 3] - 2 * W[:-1, 2] + W[:-1, 1], W[1:, 2] - 2 * W[1:, 1] + W[1:, 0], rtol=0, atol=1e-9)
+
+
+@settings(max_examples=80, deadline=None)
+@given(st.lists(_GRID, min_size=4, max_size=4, unique=True), st.integers(-3, 3), st.booleans())
+def test_hw05_q2_the_cross_product_test_agrees_with_classify_joints(points, s, parallel):
+    # the criterion of hw05 q2 (lecture 06 §2) against the outline classifier on a real
+    # TrueType contour P0 (on), A, B (off), P2 (on): its first joint is the implied M
+    from course_lib.outlines import Outline, classify_joints, truetype_contour
+
+    P0, A, B, P2 = (np.array(p, float) for p in points)
+    if parallel:
+        assume(s != 0)
+        P2 = P0 + s * (B - A)  # exactly parallel chord, in either direction
+    u, w = B - A, P2 - P0
+    rel = abs(u[0] * w[1] - u[1] * w[0]) / (np.linalg.norm(u) * np.linalg.norm(w) or 1.0)
+    assume(parallel or rel > 1e-6)
+    assume(min(np.linalg.norm(A - P0), np.linalg.norm(P2 - B), np.linalg.norm(w)) > 0)
+    contour = truetype_contour(np.array([P0, A, B, P2]), [True, False, False, True])
+    table = classify_joints(Outline((contour,), "two quadratics"))
+    k = int(np.flatnonzero(table.implied)[0])
+    assert table.g_order[k] >= 1 and table.angle[k] < 1e-7
+    assert (table.kind[k] == "G2") == parallel == RIGHT["hw05.q2"](P0, A, B, P2)
 
 
 def test_hw03_q4_only_uniform_knots_put_every_joint_at_the_midpoint():
