@@ -150,11 +150,12 @@ answer_q4 = "b"
 check("hw05.q4", answer_q4)
 
 # %% [markdown] solution
-# The five G2 points are the extremes of the bowl and of the counter: the on-curve point is
-# stored, but it sits exactly at the midpoint of its off-curve neighbours, and the neighbouring
-# points are mirror images about the horizontal or vertical line through it, so
-# $(B - A) \times (P_2 - P_0) = 0$. The other explicit smooth points of the b (where the bowl
-# joins the stem region) are only G1.
+# The five G2 points are the four extremes of the counter and the rightmost point of the bowl:
+# the on-curve point is stored, but it sits exactly at the midpoint of its off-curve
+# neighbours, and the neighbouring points are mirror images about the horizontal or vertical
+# line through it, so $(B - A) \times (P_2 - P_0) = 0$. The top and bottom points of the bowl
+# are stored too, but the bowl is not symmetric about a vertical line (its left end meets the
+# stem): they are not midpoints of their neighbours, and they are only G1.
 
 # %% [markdown]
 # ## Question 5 — a G2 run between two corners (write a function)
