@@ -140,6 +140,38 @@ def quad_spline_vectorized(V, b):
     return np.stack([J[:-1], V[1:-1], J[1:]], axis=1)
 
 
+# hw05, by hand: G2 at an implied point iff (B - A) x (P2 - P0) = 0 (lecture 06 §2), relative;
+# a G2 run: the uniform cubic B-spline on 2V0 - V1, V0..Vn, 2Vn - Vn-1, each span a, b, c, d
+# converted to Bézier form (a + 4b + c)/6, (2b + c)/3, (b + 2c)/3, (b + 4c + d)/6.
+def _cross2(u, w):
+    return u[0] * w[1] - u[1] * w[0]
+
+
+def implied_is_g2(P0, A, B, P2):
+    u, w = np.subtract(B, A), np.subtract(P2, P0)
+    return bool(abs(_cross2(u, w)) <= 1e-9 * np.linalg.norm(u) * np.linalg.norm(w))
+
+
+def implied_is_g2_sine(P0, A, B, P2):  # the sine of the angle between unit vectors
+    u, w = np.subtract(B, A), np.subtract(P2, P0)
+    return abs(_cross2(u / np.linalg.norm(u), w / np.linalg.norm(w))) < 1e-9
+
+
+def g2_run(V):
+    V = np.asarray(V, float)
+    E = np.vstack([2 * V[0] - V[1], V, 2 * V[-1] - V[-2]])
+    return np.array(
+        [[(a + 4 * b + c) / 6, (2 * b + c) / 3, (b + 2 * c) / 3, (b + 4 * c + d) / 6] for a, b, c, d in zip(E, E[1:], E[2:], E[3:], strict=False)]
+    )
+
+
+def g2_run_matrix(V):  # the uniform B-spline to Bézier matrix, as nested lists
+    V = np.asarray(V, float)
+    E = np.vstack([2 * V[0] - V[1], V, 2 * V[-1] - V[-2]])
+    M = np.array([[1, 4, 1, 0], [0, 4, 2, 0], [0, 2, 4, 0], [0, 1, 4, 1]]) / 6
+    return [(M @ E[i : i + 4]).tolist() for i in range(len(E) - 3)]
+
+
 # ------------------------------------------------------------------ typical wrong functions
 def chain_missing_term(q1, q2, f1, f2):
     return np.array([q1 * f1, q2 * f1**2])
@@ -271,7 +303,42 @@ def returns_none(*args, **kwargs):
     return None
 
 
+def implied_is_g2_exact(P0, A, B, P2):  # no tolerance: rounding makes G2 look G1
+    u, w = np.subtract(B, A), np.subtract(P2, P0)
+    return bool(_cross2(u, w) == 0)
+
+
+def implied_is_g2_absolute(P0, A, B, P2):  # absolute tolerance: a tiny glyph is all G2
+    u, w = np.subtract(B, A), np.subtract(P2, P0)
+    return bool(abs(_cross2(u, w)) <= 1e-9)
+
+
+def implied_is_g2_same_direction(P0, A, B, P2):  # forgets that antiparallel is parallel
+    u, w = np.subtract(B, A), np.subtract(P2, P0)
+    return bool(np.linalg.norm(u / np.linalg.norm(u) - w / np.linalg.norm(w)) < 1e-9)
+
+
+def implied_is_g2_wrong_legs(P0, A, B, P2):  # compares the outer legs A - P0 and P2 - B
+    u, w = np.subtract(A, P0), np.subtract(P2, B)
+    return bool(abs(_cross2(u, w)) <= 1e-9 * np.linalg.norm(u) * np.linalg.norm(w))
+
+
+def g2_run_no_phantoms(V):  # the B-spline on V itself: n - 2 segments, corners lost
+    return g2_run(np.asarray(V, float)[1:-1]) if len(V) > 3 else np.zeros((0, 4, 2))
+
+
+def g2_run_doubled_ends(V):  # repeats the corners instead of reflecting: starts off the corner
+    V = np.asarray(V, float)
+    return g2_run(np.vstack([V[0], V, V[-1]]))[1:-1]
+
+
+def g2_run_reversed(V):
+    return g2_run(np.asarray(V, float)[::-1])
+
+
 # ------------------------------------------------------------------ the table
+_KAPPA_B = np.array([-24148.0, -23862.0]) * 2048 / 40738**1.5  # hw05.q3, derived at its row
+
 # hw02.q3 / q5 data: the homework's own
 _Q5_HW02 = 0.25 * np.array([1.0, -3.0]) + 2 * np.array([2.0, 0.0])  # β1² q'' + β2 q' = (4.25, -0.75)
 # hw03: p3 for knots (0, 2, 3) is (10/3, 3); left 3 (p3 - p2)/2 = (2, 0), right 3 (p4 - p3) = (2, 0)
@@ -470,6 +537,41 @@ TABLE = {
         [np.array([4.0, 3.0]), np.array([3.5, 2.5]), np.array([3.0]), np.array([2.0, 1.0])],
     ),
     "hw04.q6": (["b", "B", "(b)", ["b"]], ["a", "c", "d", "b, c", "x"]),
+    # hw05.q1: outer contour 13 joints = 6 corners (4 of the stem, 2 where the bowl meets it),
+    # 6 implied/explicit G1, 1 G2 (the right extreme, symmetric); counter 8 joints = 4 implied G1
+    # + 4 extremes sitting at the midpoint of symmetric off-curve neighbours (G2)
+    "hw05.q1": (
+        [np.array([6, 10, 5]), [6, 10, 5], (6.0, 10.0, 5.0)],
+        [np.array([6, 15, 0]), np.array([6, 6, 1]), np.array([5, 10, 6]), np.array([0, 4, 4])],
+    ),
+    "hw05.q2": (
+        [implied_is_g2, implied_is_g2_sine],
+        [
+            implied_is_g2_exact,
+            implied_is_g2_absolute,
+            implied_is_g2_same_direction,
+            implied_is_g2_wrong_legs,
+            returns_none,
+            raises,
+        ],
+    ),
+    # hw05.q3 in font units: v = B - A = (177, 97), |v|² = 40738; q''(1) = (61, -103),
+    # r''(0) = (69, -97); v x q'' = -24148, v x r'' = -23862; in em multiply by 2048
+    "hw05.q3": (
+        [_KAPPA_B, list(_KAPPA_B), tuple(_KAPPA_B)],
+        [_KAPPA_B / 2048, _KAPPA_B[::-1], -_KAPPA_B, np.array([_KAPPA_B[0], _KAPPA_B[0]])],
+    ),
+    "hw05.q4": (["b", "B", "(b)", ["b"]], ["a", "c", "d", "a, b"]),
+    "hw05.q5": (
+        [g2_run, g2_run_matrix],
+        [g2_run_no_phantoms, g2_run_doubled_ends, g2_run_reversed, returns_none, raises],
+    ),
+    # hw05.q6: the counter as in q1 (4 G1, 4 G2); outer: 6 corners kept, bowl of 9 cubics (10 run
+    # points) with 8 G2 inner joints
+    "hw05.q6": (
+        [np.array([6, 4, 12]), [6, 4, 12], (6.0, 4.0, 12.0)],
+        [np.array([6, 0, 8]), np.array([6, 10, 5]), np.array([4, 4, 12])],
+    ),
 }
 
 ALL_IDS = [q for hw in HOMEWORKS for q in questions(hw)]
@@ -534,7 +636,7 @@ def test_typical_wrong_answer_fails_the_check_and_loses_points(qid, k, value):
 # ------------------------------------------------------------------ format hints
 @pytest.mark.parametrize(
     ("qid", "value"),
-    [("hw01.q3", "e"), ("hw01.q6", "b, f"), ("hw02.q6", "yes"), ("hw03.q4", "d"), ("hw04.q6", "x")],
+    [("hw01.q3", "e"), ("hw01.q6", "b, f"), ("hw02.q6", "yes"), ("hw03.q4", "d"), ("hw04.q6", "x"), ("hw05.q4", "e")],
 )
 def test_a_letter_that_is_no_option_gets_a_format_hint(qid, value):
     v = check(qid, value)

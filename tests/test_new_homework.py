@@ -1,7 +1,7 @@
 """``tools/new_homework.py`` scaffolds a homework that works end to end, with nothing registered by hand.
 
 In a temporary copy of the repository (never in this checkout) the scaffolder writes the next
-homework (hw05 today); then, in that copy:
+homework (hw06 today); then, in that copy:
 
 * ``tools/build_homework.py --check`` passes (the notebooks were built from the source);
 * the solution notebook runs in a Jupyter kernel (nbclient) and every check says ✓; the blank

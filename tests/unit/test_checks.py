@@ -13,6 +13,8 @@ import math
 import numpy as np
 import pytest
 import sympy as sp
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 
 from course_lib import checks
 from course_lib.checks import (
@@ -64,6 +66,15 @@ def _quadratic_beta_spline(V, b):
 
 D = np.array([[0, 0], [1, 2], [2, 3], [4, 3], [5, 1], [6, 0], [8, 1], [9, 3]], dtype=float)
 
+
+def _g2_run(V):
+    """Uniform cubic B-spline on 2V0 - V1, V0..Vn, 2Vn - Vn-1 in Bézier form, span by span."""
+    V = np.asarray(V, float)
+    E = np.vstack([2 * V[0] - V[1], V, 2 * V[-1] - V[-2]])
+    return np.array([[(a + 4 * b + c) / 6, (2 * b + c) / 3, (b + 2 * c) / 3, (b + 4 * c + d) / 6]
+                     for a, b, c, d in zip(E, E[1:], E[2:], E[3:], strict=False)])
+
+
 RIGHT = {
     "hw01.q1": np.array([3.0, 1.0]) / math.sqrt(10),  # c'(1) = (3, 1)
     "hw01.q2": _chain,
@@ -97,6 +108,16 @@ RIGHT = {
     "hw04.q4": _quadratic_beta_spline,
     "hw04.q5": np.array([3.0, 2.0]),
     "hw04.q6": "b",
+    # hw05: see tests/test_answer_equivalence.py for the derivations
+    "hw05.q1": np.array([6, 10, 5]),
+    "hw05.q2": lambda P0, A, B, P2: bool(
+        abs(np.linalg.det(np.array([np.subtract(B, A), np.subtract(P2, P0)], dtype=float)))
+        <= 1e-9 * np.linalg.norm(np.subtract(B, A)) * np.linalg.norm(np.subtract(P2, P0))
+    ),
+    "hw05.q3": np.array([-24148.0, -23862.0]) * 2048 / 40738**1.5,
+    "hw05.q4": "b",
+    "hw05.q5": _g2_run,
+    "hw05.q6": np.array([6, 4, 12]),
 }
 ALL_IDS = sorted(RIGHT)
 
@@ -250,6 +271,14 @@ TARGETED = [
     ("hw04.q1", np.array([3.0, 3.0]) + np.array([2.0, 1.0]) / 1.5, "inverted"),
     ("hw04.q1", np.array([4.0, 7.0]), "off that line"),
     ("hw04.q5", np.array([4.0, 3.0]), "swapped"),
+    ("hw05.q1", np.array([6, 15, 0]), "rel_jump"),
+    ("hw05.q1", np.array([6, 6, 1]), "one contour only"),
+    ("hw05.q1", np.array([5, 10, 6]), "wrong order"),
+    ("hw05.q3", np.array([-24148.0, -23862.0]) / 40738**1.5, "font units"),
+    ("hw05.q3", np.array([-23862.0, -24148.0]) * 2048 / 40738**1.5, "swapped"),
+    ("hw05.q3", np.array([24148.0, 23862.0]) * 2048 / 40738**1.5, "sign"),
+    ("hw05.q6", np.array([6, 0, 8]), "outer contour only"),
+    ("hw05.q6", np.array([6, 10, 5]), "original b"),
 ]
 
 
@@ -393,6 +422,53 @@ def test_hw04_q6_unit_shape_parameters_give_the_uniform_cubic_b_spline():
     J = (b1 * W_left_2 + W_right_1) / (1 + b1)  # step (2)
     assert sp.simplify(J - (Vm + 4 * V0 + Vp) / 6) == 0  # uniform cubic B-spline, Bézier form
     assert RIGHT["hw04.q6"] == "b"
+
+
+_GRID = st.tuples(st.integers(-2048, 2048), st.integers(-2048, 2048))
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(_GRID, min_size=2, max_size=9, unique=True))
+def test_hw05_q5_phantom_vertices_keep_the_corners_and_their_tangents(points):
+    # what hw05 q5 teaches, on run polygons of font-unit points: the cubic Beta-spline with
+    # β1 = 1, β2 = 0 on 2V0 - V1, V0..Vn, 2Vn - Vn-1 is the span-by-span Bézier form written
+    # by hand, starts at V0 along V1 - V0 with zero curvature, ends likewise, and is C2
+    from course_lib.beta_splines import cubic_beta_spline
+
+    V = np.array(points, float)
+    E = np.vstack([2 * V[0] - V[1], V, 2 * V[-1] - V[-2]])
+    W = np.array(cubic_beta_spline(E, 1.0, 0.0).segments)
+    assert W.shape == (len(V) - 1, 4, 2)
+    assert np.allclose(W, _g2_run(V), rtol=0, atol=1e-9)
+    assert np.allclose(W[0, 0], V[0], rtol=0, atol=1e-9) and np.allclose(W[-1, -1], V[-1], rtol=0, atol=1e-9)
+    assert np.allclose(3 * (W[0, 1] - W[0, 0]), V[1] - V[0], rtol=0, atol=1e-9)
+    assert np.allclose(3 * (W[-1, -1] - W[-1, -2]), V[-1] - V[-2], rtol=0, atol=1e-9)
+    assert np.allclose(W[0, 2] - 2 * W[0, 1] + W[0, 0], 0, atol=1e-9)
+    assert np.allclose(W[:-1, 3], W[1:, 0], rtol=0, atol=1e-9)
+    assert np.allclose(W[:-1, 3] - W[:-1, 2], W[1:, 1] - W[1:, 0], rtol=0, atol=1e-9)
+    assert np.allclose(W[:-1, 3] - 2 * W[:-1, 2] + W[:-1, 1], W[1:, 2] - 2 * W[1:, 1] + W[1:, 0], rtol=0, atol=1e-9)
+
+
+@settings(max_examples=80, deadline=None)
+@given(st.lists(_GRID, min_size=4, max_size=4, unique=True), st.integers(-3, 3), st.booleans())
+def test_hw05_q2_the_cross_product_test_agrees_with_classify_joints(points, s, parallel):
+    # the criterion of hw05 q2 (lecture 06 §2) against the outline classifier on a real
+    # TrueType contour P0 (on), A, B (off), P2 (on): its first joint is the implied M
+    from course_lib.outlines import Outline, classify_joints, truetype_contour
+
+    P0, A, B, P2 = (np.array(p, float) for p in points)
+    if parallel:
+        assume(s != 0)
+        P2 = P0 + s * (B - A)  # exactly parallel chord, in either direction
+    u, w = B - A, P2 - P0
+    rel = abs(u[0] * w[1] - u[1] * w[0]) / (np.linalg.norm(u) * np.linalg.norm(w) or 1.0)
+    assume(parallel or rel > 1e-6)
+    assume(min(np.linalg.norm(A - P0), np.linalg.norm(P2 - B), np.linalg.norm(w)) > 0)
+    contour = truetype_contour(np.array([P0, A, B, P2]), [True, False, False, True])
+    table = classify_joints(Outline((contour,), "two quadratics"))
+    k = int(np.flatnonzero(table.implied)[0])
+    assert table.g_order[k] >= 1 and table.angle[k] < 1e-7
+    assert (table.kind[k] == "G2") == parallel == RIGHT["hw05.q2"](P0, A, B, P2)
 
 
 def test_hw03_q4_only_uniform_knots_put_every_joint_at_the_midpoint():
