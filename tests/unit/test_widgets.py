@@ -803,11 +803,18 @@ def test_coalescer_draws_the_newest_of_queued_events():
     worker.join()
     c = box["c"]
     assert seen == [0, 5, 99, 0, 1, 2] and c.dropped == 4
-    # without an event loop (tests, scripts) every event is handled at once
+    # without an event loop (tests, scripts) every event is handled at once (again in a thread
+    # of its own: this one's loop may be running)
     seen.clear()
-    c = Coalescer(slow, gap=10.0)
-    c(1)
-    c(2)
+
+    def plain():
+        c = Coalescer(slow, gap=10.0)
+        c(1)
+        c(2)
+
+    worker = threading.Thread(target=plain)
+    worker.start()
+    worker.join()
     assert seen == [1, 2]
 
 
