@@ -7,6 +7,8 @@ the site loads nothing from the network.
 
 from __future__ import annotations
 
+import re
+
 project = "Geometric continuity of parametric curves"
 author = "the course authors"
 copyright = "the course authors"
@@ -61,6 +63,56 @@ html_theme_options = {
 }
 
 
+# ---- browser-tab titles: plain text.  Sphinx fills <title> with the page title's text, so a
+# heading with math ("... $G^n$ ...") would show its TeX source "\(G^n\)" in the tab; the
+# heading itself keeps its math (MathJax renders it in the page).
+_GREEK = {
+    "alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "varepsilon": "ε", "epsilon": "ε",
+    "kappa": "κ", "theta": "θ", "lambda": "λ", "mu": "μ", "pi": "π", "sigma": "σ",
+    "tau": "τ", "varphi": "φ", "phi": "φ", "omega": "ω", "Gamma": "Γ", "Delta": "Δ",
+    "cdot": "·", "cdots": "⋯", "dots": "…", "ldots": "…", "le": "≤", "leq": "≤", "ge": "≥",
+    "geq": "≥", "to": "→", "times": "×", "infty": "∞", "circ": "∘", "in": "∈",
+}
+_SUP = dict(zip("0123456789+-=()nikj", "⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁼⁽⁾ⁿⁱᵏʲ", strict=True))
+_SUB = dict(zip("0123456789+-=()aeijkmnrstux", "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑᵢⱼₖₘₙᵣₛₜᵤₓ", strict=True))
+_INLINE_MATH = re.compile(r"\\\((.+?)\\\)|\$([^$]+)\$")
+
+
+def _script(text: str, table: dict[str, str], mark: str) -> str:
+    """``n`` as a superscript/subscript character where Unicode has one, else ``^n``/``_n``."""
+    if all(ch in table for ch in text):
+        return "".join(table[ch] for ch in text)
+    return f"{mark}({text})" if len(text) > 1 else f"{mark}{text}"
+
+
+def tex_to_text(tex: str) -> str:
+    """Readable plain text for a bit of inline TeX: ``G^n`` -> ``Gⁿ``, ``\\beta_1`` -> ``β₁``."""
+    out = re.sub(r"\\([A-Za-z]+)\s*", lambda m: _GREEK.get(m.group(1), ""), tex)
+    out = re.sub(r"\\[,;:! ]", " ", out)
+    for mark, table in (("^", _SUP), ("_", _SUB)):
+        out = re.sub(
+            re.escape(mark) + r"(?:\{([^{}]*)\}|(\S))",
+            lambda m, t=table, k=mark: _script(m.group(1) or m.group(2), t, k),
+            out,
+        )
+    return out.replace("{", "").replace("}", "").strip()
+
+
+def plain_title(title: str) -> str:
+    """A page title for the browser tab: inline math (``\\(…\\)`` or ``$…$``) as plain text."""
+    return _INLINE_MATH.sub(lambda m: tex_to_text(m.group(1) or m.group(2)), title)
+
+
+def _plain_tab_title(app, pagename, templatename, context, doctree):
+    # after the theme's own handler (priority below): sphinx-book-theme prints the page title
+    # as the first heading of a printed page (the handouts) from ``pagetitle``, which it fills
+    # with the title's raw text ("G^n"); both become "Gⁿ"
+    if context.get("title"):
+        context["title"] = plain_title(context["title"])
+        context["pagetitle"] = re.sub(r"<[^>]+>", "", context["title"])
+
+
 def setup(app):
     # MathJax on every page: the navigation shows lecture titles with math on all of them
     app.set_html_assets_policy("always")
+    app.connect("html-page-context", _plain_tab_title, priority=900)

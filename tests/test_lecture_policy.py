@@ -204,6 +204,9 @@ def test_one_notation_and_static_figures(path):
     prose = "\n".join(_src(c) for c in cells if c["cell_type"] == "markdown")
     code = "\n".join(_src(c) for c in cells if c["cell_type"] == "code")
     assert not re.search(r"\s--\s", prose), f"{path.name}: write a dash as '—', not '--'"
+    assert "\\mathbf" not in prose, (
+        f"{path.name}: points and vectors are plain letters (q, r, Q, T), not \\mathbf"
+    )
     assert "%matplotlib widget" not in code, (
         f"{path.name}: static figures only; demos make their own interactive canvases"
     )

@@ -335,13 +335,79 @@ def browsed(site, chromium) -> dict:
 @pytest.mark.slow
 def test_no_raw_tex_on_any_page(site):
     """MyST turned every $…$ of the prose into math: none is left as text (the browser test
-    then sees MathJax typeset it).  The tab title (``<title>``) keeps a title's TeX source:
-    Sphinx writes it as plain text."""
+    then sees MathJax typeset it).  The tab title (``<title>``) is plain text, checked by
+    test_tab_titles_are_plain_text_and_headings_keep_their_math."""
     found = []
     for page in _html_files(site):
         prose = " ".join(_parse(page).prose)
         found += [f"{page.relative_to(site)}: {m!r}" for m in RAW_TEX.findall(prose)]
     assert not found, "\n".join(found[:20])
+
+
+class _Title(HTMLParser):
+    """The text of ``<title>``, of the heading printed on paper (sphinx-book-theme's
+    ``#jb-print-docs-body h1``) and of the page's own first ``<h1>``."""
+
+    def __init__(self) -> None:
+        super().__init__(convert_charrefs=True)
+        self.title, self.print_h1, self.h1, self._in, self._print = "", "", "", None, False
+
+    def handle_starttag(self, tag, attrs):
+        if dict(attrs).get("id") == "jb-print-docs-body":
+            self._print = True
+        if tag == "title":
+            self._in = "title"
+        elif tag == "h1" and self._print and not self.print_h1:
+            self._in = "print_h1"
+        elif tag == "h1" and not self._print and not self.h1:
+            self._in = "h1"
+
+    def handle_endtag(self, tag):
+        if tag == self._in or (tag == "h1" and self._in):
+            self._in, self._print = None, self._print and self._in != "print_h1"
+
+    def handle_data(self, data):
+        if self._in:
+            setattr(self, self._in, getattr(self, self._in) + data)
+
+
+@pytest.mark.slow
+def test_tab_titles_are_plain_text_and_headings_keep_their_math(site):
+    """Browser tabs and printed pages (the handouts) show readable titles (``Gⁿ``, not
+    ``\\(G^n\\)`` or ``G^n``); the page's own heading keeps its math for MathJax."""
+    bad = []
+    for page in _html_files(site):
+        p = _Title()
+        p.feed(page.read_text(errors="replace"))
+        for text in (p.title, p.print_h1):
+            if RAW_TEX.search(text) or "\\" in text or "$" in text or "^" in text:
+                bad.append(f"{page.relative_to(site)}: {text!r}")
+    assert not bad, "\n".join(bad)
+    lecture5 = next(site.glob("lectures/05_*.html"))
+    p = _Title()
+    p.feed(lecture5.read_text(errors="replace"))
+    plain = "5 · Higher order: the quartic G3 Beta-spline, Gⁿ, and surfaces"
+    assert p.title.startswith(plain)
+    assert p.print_h1.strip() == plain, "the heading of the printed page (handouts)"
+    assert "\\(G^n\\)" in p.h1, f"the heading keeps its math: {p.h1!r}"
+
+
+def test_tab_title_text_from_tex():
+    conf = _load_conf()
+    assert conf.tex_to_text("G^n") == "Gⁿ"
+    assert conf.tex_to_text("\\beta_1 > 0") == "β₁ > 0"
+    assert conf.tex_to_text("G^{n+1}") == "Gⁿ⁺¹"
+    assert conf.tex_to_text("x^{ab}") == "x^(ab)"  # no superscript letters a, b: spelled out
+    title = '5 · Higher order, <span class="math">\\(G^n\\)</span>, and $C^2$'
+    assert conf.plain_title(title) == '5 · Higher order, <span class="math">Gⁿ</span>, and C²'
+    assert conf.plain_title("no math here") == "no math here"
+
+
+def _load_conf():
+    spec = importlib.util.spec_from_file_location("site_conf", ROOT / "site" / "conf.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
 
 
 @pytest.mark.slow

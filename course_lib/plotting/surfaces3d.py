@@ -2,7 +2,7 @@
 
 Two patches meet with G1 (tangent-plane continuity) when their unit normals agree
 along the common boundary: :func:`plot_patch_pair` draws both patches, the boundary,
-and the normals of each patch there -- drawn from both sides, so agreement shows as
+and the normals of each patch there, drawn from both sides, so agreement shows as
 arrows lying on top of each other and a crease as arrows that split.
 """
 
@@ -106,6 +106,7 @@ def plot_patch_pair(
     length: float | None = None,
     resolution: int = 17,
     net: bool = True,
+    zoom: float = 1.0,
 ) -> PatchPairArtists:
     """Two patches sharing the boundary ``F(1, v) = G(0, v)``, with unit normals along it.
 
@@ -117,6 +118,11 @@ def plot_patch_pair(
     ----------
     length : float, optional
         Drawn length of the unit normals (default 35 % of the patches' size).
+    zoom : float
+        Scale of the 3D box inside its Axes (matplotlib's ``set_box_aspect(zoom=...)``);
+        above 1 it trims the empty margin a 3D Axes keeps around its box, so a pair of
+        panels stays readable in a figure narrow enough for a laptop (about 8.5 inches,
+        850 px, for two panels side by side).
 
     Returns
     -------
@@ -129,6 +135,8 @@ def plot_patch_pair(
     """
     _require_3d(ax)
     k = check_integer(n_normals, "n_normals", minimum=1)
+    if not (isinstance(zoom, (int, float)) and 0.25 <= zoom <= 4):
+        raise ValueError(f"zoom must be a number between 0.25 and 4, got {zoom!r}")
     a = plot_patch(ax, F, color=OKABE_ITO["blue"], resolution=resolution, net=net)
     b = plot_patch(ax, G, color=OKABE_ITO["vermillion"], resolution=resolution, net=net)
     s = np.linspace(0.0, 1.0, 41)
@@ -176,7 +184,11 @@ def plot_patch_pair(
     if normals:
         pts += [p + dF, q + dG]
     _fit_limits(ax, np.vstack(pts))
-    ax.set_box_aspect((1, 1, 1))
+    ax.set_box_aspect((1, 1, 1), zoom=float(zoom))
+    from matplotlib.ticker import MaxNLocator
+
+    for axis in (ax.xaxis, ax.yaxis, ax.zaxis):  # few ticks: the numbers are not the point
+        axis.set_major_locator(MaxNLocator(4))
     motion = None
     from ._motion import LightWhileRotating, is_interactive_canvas
 

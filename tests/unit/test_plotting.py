@@ -432,6 +432,31 @@ def test_patch_pair_normals_along_the_boundary():
         plot_patch_pair(ax2, F, G)
 
 
+def test_patch_pair_zoom_fills_a_laptop_sized_figure():
+    """Lecture 05's pair: two 3D panels in 8.2 inches (≤ 900 px at 100 dpi, with the
+    file browser open on a 1366 px laptop); zoom trims the empty margin of each 3D box."""
+    from io import BytesIO
+
+    from course_lib.plotting.surfaces3d import plot_patch_pair
+    from course_lib.surfaces import BezierPatch
+
+    x = np.linspace(0, 1, 4)
+    F = BezierPatch(np.array([[[a, b, a * (1 - a) * b] for b in x] for a in x]))
+    G = BezierPatch(np.array([[[1 + a, b, -a * (1 - a) * b] for b in x] for a in x]))
+    fig, axes = new_figure(1, 2, figsize=(8.2, 4.1), pyplot=False, projection="3d")
+    plot_patch_pair(axes[0], F, G, net=False)
+    plot_patch_pair(axes[1], F, G, net=False, zoom=1.3)
+    box = [np.linalg.norm(ax.get_box_aspect()) for ax in axes]
+    assert box[1] == pytest.approx(1.3 * box[0])  # the zoomed box is drawn 1.3 times larger
+    buf = BytesIO()
+    fig.savefig(buf, format="png", dpi=100, bbox_inches="tight")
+    width = int.from_bytes(buf.getvalue()[16:20], "big")  # PNG IHDR
+    assert width <= 860
+    for bad in (0, -1.0, 10, "2"):
+        with pytest.raises(ValueError, match="zoom"):
+            plot_patch_pair(axes[0], F, G, zoom=bad)
+
+
 def test_profile_with_sparse_arc_lengths_keeps_the_joints_exact():
     from course_lib.plotting import curvature_profile
 
