@@ -4,12 +4,13 @@
 variant); ``generate(rng)`` a student's own variant (:mod:`course_lib.variants`).  Every variant
 is well posed by construction (tested over thousands of codes in ``tests/test_variants_hw02.py``):
 
-* q1: ``q'(1)`` with two non-zero integer components and ``r'(0) = β1 q'(1)`` with
-  ``β1 ∈ {1/2, 3/4, 3/2, 2, 5/2, 3}`` (``β1 > 0`` away from 0, and ``β1 ≠ 1``: an upside-down
-  ``β1`` is another number);
-* q2: ``q'(1)``, ``q''(1)`` integer vectors, not parallel (``|det| ≥ 1``), ``r'(0) = β1 q'(1)``,
-  ``r''(0) = β1² q''(1) + β2 q'(1)`` with ``β1 ≠ 1`` as in q1 and ``β2 ≠ 0`` (a half-integer,
-  ``|β2| ≥ 1/2``): a missing ``β2`` term, a wrong sign or an unsquared ``β1`` changes the answer;
+* q1: ``q'(1)`` with two non-zero integer components and ``r'(0) = β1 q'(1)`` with ``β1`` a
+  quarter in ``[1/2, 5]``, ``β1 ≠ 1`` (``β1 > 0`` away from 0; an upside-down ``β1`` is another
+  number);
+* q2: ``q'(1)``, ``q''(1)`` integer vectors without a zero component, neither parallel
+  (``|det| ≥ 1``) nor orthogonal, ``r'(0) = β1 q'(1)``, ``r''(0) = β1² q''(1) + β2 q'(1)`` with
+  ``β1 ≠ 1`` as in q1 and ``β2 ≠ 0`` (a half-integer, ``|β2| ≥ 1/2``): a missing ``β2`` term, a
+  wrong sign or an unsquared ``β1`` changes the answer, whichever coordinate it is read from;
 * q4: the same for everyone (its answer does not depend on data);
 * q5: like q2, and ``|β1² − β2| ≥ 1/4`` (so swapping ``q'`` and ``q''`` is another vector);
 * q6: the four statements in an order shuffled per student;
@@ -45,7 +46,7 @@ Q7_SEGMENTS = [
     [[9, 0.5], [10, 0.5], [11, 1.5], [12, 1.0]],
 ]
 
-BETA1 = [Fraction(1, 2), Fraction(3, 4), Fraction(3, 2), Fraction(2), Fraction(5, 2), Fraction(3)]
+BETA1 = [Fraction(n, 4) for n in range(2, 21) if n != 4]  # 1/2 .. 5 by quarters, not 1
 BETA2 = [Fraction(n, 2) for n in range(-8, 9) if n != 0]  # −4 .. 4 by halves, not 0
 
 
@@ -83,15 +84,19 @@ def _params(rng: np.random.Generator | None) -> dict:
     def nonzero():
         return pick([-3, -2, -1, 1, 2, 3])
 
-    def pair(max_abs: int = 3):  # two integer vectors, not parallel, the second not 0
+    def pair(strict: bool = False):
+        """Two integer vectors, not parallel, the first not 0; ``strict``: no zero component and
+        not orthogonal either (so every coordinate and the projection see each term)."""
         while True:
-            a = [int(rng.integers(-max_abs, max_abs + 1)) for _ in range(2)]
-            b = [int(rng.integers(-max_abs, max_abs + 1)) for _ in range(2)]
-            if a != [0, 0] and abs(_det(a, b)) >= 1:
+            if strict:
+                a, b = [nonzero(), nonzero()], [nonzero(), nonzero()]
+            else:
+                a, b = ([int(rng.integers(-3, 4)) for _ in range(2)] for _ in range(2))
+            if a != [0, 0] and abs(_det(a, b)) >= 1 and (not strict or a[0] * b[0] + a[1] * b[1] != 0):
                 return a, b
 
     q1 = [nonzero(), nonzero()]
-    q2a, q2b = pair()
+    q2a, q2b = pair(strict=True)
     while True:
         q5a, q5b = pair()
         b1, b2 = pick(BETA1), pick(BETA2)
