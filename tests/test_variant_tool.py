@@ -64,8 +64,8 @@ def test_codes_for_the_lms_are_the_codes_the_grader_computes(secret, tmp_path, c
     out = tmp_path / "codes.csv"
     tool.main(["codes", "hw01", "--secret-file", str(secret), "--roster", str(roster), "--out", str(out)])
     assert list(csv.DictReader(out.open(encoding="utf-8"))) == rows
-    with pytest.raises(SystemExit, match="hw03 has no variants"):
-        tool.main(["codes", "hw03", "--secret-file", str(secret), "--roster", str(roster)])
+    with pytest.raises(SystemExit, match="hw04 has no variants"):
+        tool.main(["codes", "hw04", "--secret-file", str(secret), "--roster", str(roster)])
     short = tmp_path / "short.txt"
     short.write_text("abc")
     with pytest.raises(SystemExit, match="too short"):
