@@ -27,8 +27,10 @@ POINTS = {"q1": 1, "q2": 2, "q3": 3, "q4": 2, "q5": 2, "q6": 1, "q7": 2}
 VARIANTS = True
 
 #: q6: the right statement (seed 000 eq. 7 with β1 = 1, β2 = 0: r'(0) = q'(1), r''(0) = q''(1),
-#: the definition of C²).  The options are shuffled per student; the letter follows the label.
-RIGHT_Q6 = "the two parametrizations meet with C² continuity there"
+#: the definition of C²).  The options are shuffled per student; the letter follows the label:
+#: the one statement that claims C² (a short key: the labels are printed on the site, and
+#: hidden-test strings must not appear there).
+RIGHT_Q6 = "C²"
 
 
 def _vec(v):
@@ -54,7 +56,7 @@ def _r2(d):
 
 
 def _right_letter_q6(d):
-    return "".join(x for x, label in sorted(d["options"].items()) if label == RIGHT_Q6)
+    return "".join(x for x, label in sorted(d["options"].items()) if RIGHT_Q6 in label)
 
 
 def _det(a, b):
