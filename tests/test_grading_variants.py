@@ -1,7 +1,7 @@
 """Per-student variants through the real sandboxed grader (issue 19), end to end.
 
-Three students hand in the hw01 solution notebook: two with their own variant code in
-``VARIANT``, one with a friend's code.  ``tools/grade.py --secret-file --roster`` recomputes each
+Three students hand in the hw01 (hw02, hw03) solution notebook: two with their own variant
+code in ``VARIANT``, one with a friend's code.  ``tools/grade.py --secret-file --roster`` recomputes each
 code from the roster's id and grades on that student's own data: the two honest submissions get
 full marks, the borrowed code does not.
 """
@@ -14,13 +14,29 @@ import sys
 from pathlib import Path
 
 import nbformat
+import numpy as np
 import pytest
 
 from course_lib import variants
 
 ROOT = Path(__file__).resolve().parents[1]
-HIDDEN = ROOT / "solutions" / "hidden_tests" / "hw01.py"
-SOLUTION = ROOT / "solutions" / "hw01_reparametrization.ipynb"
+HIDDEN = {hw: ROOT / "solutions" / "hidden_tests" / f"{hw}.py" for hw in ("hw01", "hw02", "hw03")}
+SOLUTION = {
+    "hw01": ROOT / "solutions" / "hw01_reparametrization.ipynb",
+    "hw02": ROOT / "solutions" / "hw02_beta_constraints.ipynb",
+    "hw03": ROOT / "solutions" / "hw03_g1_knot_bezier_splines.ipynb",
+}
+#: the questions that are the same for everyone (functions; symbolic answers without data)
+SAME_FOR_ALL = {"hw01": {"q2": 3}, "hw02": {"q3": 3, "q4": 2}, "hw03": {"q2": 4, "q6": 2, "q7": 2}}
+FULL = {"hw01": 13, "hw02": 13, "hw03": 16}
+
+
+def _differ(a, b) -> bool:
+    if isinstance(a, str):
+        return a != b
+    if isinstance(a, dict):
+        return any(_differ(a[k], b[k]) for k in a)
+    return not np.allclose(a, b)
 
 spec = importlib.util.spec_from_file_location("grade_variants", ROOT / "tools" / "grade.py")
 grade = importlib.util.module_from_spec(spec)
@@ -32,16 +48,17 @@ pytestmark = [pytest.mark.slow, pytest.mark.timeout(300)]
 SECRET = "a course secret for the variant test"
 
 
-def _with_variant(code: str, path: Path) -> None:
-    nb = nbformat.read(SOLUTION, as_version=4)
+def _with_variant(hw: str, code: str, path: Path) -> None:
+    nb = nbformat.read(SOLUTION[hw], as_version=4)
     (cell,) = [c for c in nb.cells if c.cell_type == "code" and 'VARIANT = ""' in c.source]
     cell.source = cell.source.replace('VARIANT = ""', f'VARIANT = "{code}"', 1)
     nbformat.write(nb, path)
 
 
-@pytest.fixture(scope="module")
-def graded(tmp_path_factory):
-    root = tmp_path_factory.mktemp("course")
+@pytest.fixture(scope="module", params=["hw01", "hw02", "hw03"])
+def graded(request, tmp_path_factory):
+    hw = request.param
+    root = tmp_path_factory.mktemp(f"course-{hw}")
     secret = root / "course_secret.txt"
     secret.write_text(SECRET + "\n", encoding="utf-8")
     roster = root / "roster.csv"
@@ -50,38 +67,47 @@ def graded(tmp_path_factory):
         "1001,s001,Ada,ada@example.org\n1002,s002,Emmy,emmy@example.org\n1003,s003,Sophie,s@example.org\n",
         encoding="utf-8",
     )
-    codes = {i: variants.code_for(SECRET, "hw01", i) for i in ("1001", "1002", "1003")}
+    codes = {i: variants.code_for(SECRET, hw, i) for i in ("1001", "1002", "1003")}
     subs = root / "submissions"
     subs.mkdir()
-    _with_variant(codes["1001"], subs / "s001.ipynb")
-    _with_variant(codes["1002"], subs / "s002.ipynb")
-    _with_variant(codes["1001"], subs / "s003.ipynb")  # Sophie used Ada's code
+    _with_variant(hw, codes["1001"], subs / "s001.ipynb")
+    _with_variant(hw, codes["1002"], subs / "s002.ipynb")
+    _with_variant(hw, codes["1001"], subs / "s003.ipynb")  # Sophie used Ada's code
     out = root / "grades"
     code = grade.main(
-        ["--tests", str(HIDDEN), "--submissions", str(subs), "--out", str(out), "--roster", str(roster),
+        ["--tests", str(HIDDEN[hw]), "--submissions", str(subs), "--out", str(out), "--roster", str(roster),
          "--secret-file", str(secret), "--jobs", "2", "--sandbox", "auto"]
     )  # fmt: skip
-    variants.data("hw01", variants.DEFAULT)
+    variants.data(hw, variants.DEFAULT)
     with open(out / "scores.csv", newline="", encoding="utf-8") as fh:
         rows = {r["student"]: r for r in csv.DictReader(fh)}
-    return {"code": code, "rows": rows, "out": out, "codes": codes}
+    return {"hw": hw, "code": code, "rows": rows, "out": out, "codes": codes}
 
 
 def test_each_student_is_graded_on_their_own_variant(graded):
     assert graded["code"] == 0
     rows = graded["rows"]
-    assert float(rows["s001"]["total"]) == 13 and float(rows["s002"]["total"]) == 13
+    full = FULL[graded["hw"]]
+    assert float(rows["s001"]["total"]) == full and float(rows["s002"]["total"]) == full
     feedback = (graded["out"] / "feedback" / "s001.md").read_text(encoding="utf-8")
     assert f"variant {graded['codes']['1001']}" in feedback
 
 
 def test_a_friends_code_does_not_earn_full_marks(graded):
-    row = graded["rows"]["s003"]
-    assert float(row["total"]) < 13
-    # the data questions are answered for Ada's data, not Sophie's; the function question is
-    # the same for everyone
-    assert float(row["q2"]) == 3
-    assert all(float(row[q]) == 0 for q in ("q1", "q4", "q5", "q7"))
+    hw, row = graded["hw"], graded["rows"]["s003"]
+    assert float(row["total"]) < FULL[hw]
+    # the data questions are answered for Ada's data, not Sophie's; the function question (and
+    # hw02's symbolic one) is the same for everyone
+    assert all(float(row[q]) == points for q, points in SAME_FOR_ALL[hw].items())
+    spec = importlib.util.spec_from_file_location(f"hidden_{hw}_grading_variants", HIDDEN[hw])
+    hidden = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(hidden)
+    ada, sophie = (hidden.answers_for(variants.data(hw, graded["codes"][i])) for i in ("1001", "1003"))
+    variants.data(hw, variants.DEFAULT)
+    differ = [q for q in hidden.POINTS if q not in SAME_FOR_ALL[hw] and _differ(ada[f"answer_{q}"], sophie[f"answer_{q}"])]
+    assert len(differ) >= 3 and all(float(row[q]) < hidden.POINTS[q] for q in differ), differ
+    if hw == "hw01":
+        assert all(float(row[q]) == 0 for q in ("q1", "q4", "q5", "q7"))
     # and the feedback says why
     text = (graded["out"] / "feedback" / "s003.md").read_text(encoding="utf-8")
     assert f"but your variant code is {graded['codes']['1003']}" in text

@@ -26,6 +26,7 @@ spec.loader.exec_module(tool)
 def _default_afterwards():
     yield
     variants.data("hw01", variants.DEFAULT)
+    variants.data("hw02", variants.DEFAULT)
 
 
 @pytest.fixture
@@ -63,8 +64,8 @@ def test_codes_for_the_lms_are_the_codes_the_grader_computes(secret, tmp_path, c
     out = tmp_path / "codes.csv"
     tool.main(["codes", "hw01", "--secret-file", str(secret), "--roster", str(roster), "--out", str(out)])
     assert list(csv.DictReader(out.open(encoding="utf-8"))) == rows
-    with pytest.raises(SystemExit, match="hw02 has no variants"):
-        tool.main(["codes", "hw02", "--secret-file", str(secret), "--roster", str(roster)])
+    with pytest.raises(SystemExit, match="hw04 has no variants"):
+        tool.main(["codes", "hw04", "--secret-file", str(secret), "--roster", str(roster)])
     short = tmp_path / "short.txt"
     short.write_text("abc")
     with pytest.raises(SystemExit, match="too short"):
@@ -87,3 +88,18 @@ def test_show_prints_the_students_data_and_worked_answers(secret, capsys):
     line = next(x for x in text.splitlines() if "answer_q1 =" in x)
     got = np.array(ast.literal_eval(line.split("=", 1)[1].strip()))
     assert np.allclose(got, c1 / np.linalg.norm(c1))
+
+
+def test_show_works_for_hw02_too(secret, capsys):
+    capsys.readouterr()
+    assert tool.main(["show", "hw02", "1001", "--secret-file", str(secret)]) == 0
+    text = capsys.readouterr().out
+    code = variants.code_for(secret.read_bytes().strip(), "hw02", "1001")
+    data = variants.data("hw02", code)
+    assert f"VARIANT = {code!r}" in text and data["q2"]["text"] in text
+    # the worked β1 is the student's: r'(0) = β1 q'(1), read off the first coordinate by hand
+    d = data["q1"]
+    line = next(x for x in text.splitlines() if "answer_q1 =" in x)
+    assert float(line.split("=", 1)[1]) == pytest.approx(d["r1"][0] / d["q1"][0])
+    letter = next(x for x in text.splitlines() if "answer_q6 =" in x).split("=", 1)[1].strip().strip("'")
+    assert "C²" in data["q6"]["options"][letter]

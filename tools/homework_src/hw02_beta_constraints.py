@@ -22,6 +22,11 @@
 # cell, then run the **check cell** below it: ✓ right, ✗ what is wrong, … not answered yet.
 # The checks are feedback; the grade comes from other tests with other data. Keep the names, do
 # not delete cells, and before you hand in run *Kernel → Restart Kernel and Run All Cells*.
+#
+# **Your own data.** Every student gets their own numbers: paste the *variant code* your
+# instructor gave you into `VARIANT` below. The cells marked "your data" print the data of each
+# question; your code should use `DATA[...]` rather than typing the numbers. With `VARIANT = ""`
+# you get the example data (fine for practice, but graded on your own data it scores nothing).
 
 # %% [markdown]
 # ## Preparations
@@ -31,20 +36,25 @@ import matplotlib.pyplot as plt
 import numpy as np
 import sympy as sp
 
-from course_lib import PiecewiseBezier
+from course_lib import PiecewiseBezier, variants
 from course_lib.checks import check, check_all
 
 HOMEWORK = "hw02"
+VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "ABCDE23456"
+DATA = variants.data(HOMEWORK, VARIANT)
 beta1, beta2, beta3, beta4 = sp.symbols("beta1:5")
 
 # %% [markdown]
 # ## Question 1 — β1 from two tangents (compute)
 #
-# At a joint, $\mathbf q'(1) = (2, -1)$ and $\mathbf r'(0) = (5, -2.5)$. Find $\beta_1$.
+# At a joint, the end tangent $\mathbf q'(1)$ and the start tangent $\mathbf r'(0)$ of your data
+# (printed below) satisfy (7.1). Find $\beta_1$.
 
 # %%
-q1 = np.array([2.0, -1.0])
-r1 = np.array([5.0, -2.5])
+print(DATA["q1"]["text"])  # your data
+
+# %%
+q1, r1 = np.array(DATA["q1"]["q1"]), np.array(DATA["q1"]["r1"])
 ### BEGIN SOLUTION
 answer_q1 = np.linalg.norm(r1) / np.linalg.norm(q1)
 assert np.allclose(r1, answer_q1 * q1)  # (7.1) really holds: the joint is G1
@@ -57,13 +67,16 @@ check("hw02.q1", answer_q1)
 # %% [markdown]
 # ## Question 2 — β1 and β2 from two derivatives (compute)
 #
-# At another joint $\mathbf q'(1) = (1, 2)$, $\mathbf q''(1) = (0, 2)$, $\mathbf r'(0) = (3, 6)$,
-# $\mathbf r''(0) = (-4, 10)$. Find $\beta_1$ and $\beta_2$ such that (7.1) and (7.2) hold; answer
-# `np.array([beta1_value, beta2_value])`.
+# At another joint you are given $\mathbf q'(1)$, $\mathbf q''(1)$, $\mathbf r'(0)$ and
+# $\mathbf r''(0)$ (your data, below). Find $\beta_1$ and $\beta_2$ such that (7.1) and (7.2)
+# hold; answer `np.array([beta1_value, beta2_value])`.
 
 # %%
-q1, q2 = np.array([1.0, 2.0]), np.array([0.0, 2.0])
-r1, r2 = np.array([3.0, 6.0]), np.array([-4.0, 10.0])
+print(DATA["q2"]["text"])  # your data
+
+# %%
+d = DATA["q2"]
+q1, q2, r1, r2 = (np.array(d[name]) for name in ("q1", "q2", "r1", "r2"))
 ### BEGIN SOLUTION
 b1 = np.dot(r1, q1) / np.dot(q1, q1)
 b2 = np.dot(r2 - b1**2 * q2, q1) / np.dot(q1, q1)  # (7.2): r'' - β1² q'' must be β2 q'
@@ -130,12 +143,15 @@ check("hw02.q4", answer_q4)
 # %% [markdown]
 # ## Question 5 — stitching by the second constraint (compute)
 #
-# Given $\mathbf q'(1) = (2, 0)$, $\mathbf q''(1) = (1, -3)$, $\beta_1 = 0.5$, $\beta_2 = 2$: which
-# second derivative $\mathbf r''(0)$ must the next segment have for $G^2$ continuity?
+# Given $\mathbf q'(1)$, $\mathbf q''(1)$, $\beta_1$ and $\beta_2$ of your data: which second
+# derivative $\mathbf r''(0)$ must the next segment have for $G^2$ continuity?
 
 # %%
-q1, q2 = np.array([2.0, 0.0]), np.array([1.0, -3.0])
-b1, b2 = 0.5, 2.0
+print(DATA["q5"]["text"])  # your data
+
+# %%
+q1, q2 = np.array(DATA["q5"]["q1"]), np.array(DATA["q5"]["q2"])
+b1, b2 = DATA["q5"]["beta1"], DATA["q5"]["beta2"]
 ### BEGIN SOLUTION
 answer_q5 = b1**2 * q2 + b2 * q1
 ### END SOLUTION
@@ -147,16 +163,17 @@ check("hw02.q5", answer_q5)
 # %% [markdown]
 # ## Question 6 — the special values (multiple choice)
 #
-# At a joint the Beta-constraints hold with $\beta_1 = 1$ and $\beta_2 = 0$. Then:
-#
-# (a) the two parametrizations meet with $C^2$ continuity there
-# (b) they meet with $G^2$ continuity but never $C^1$
-# (c) the curvature jumps at the joint
-# (d) nothing can be said about parametric continuity
+# At a joint the Beta-constraints hold with $\beta_1 = 1$ and $\beta_2 = 0$. Which one of the
+# four statements of your data (in your own order) is true? Answer with one letter.
+
+# %%
+print(DATA["q6"]["text"])  # your data
 
 # %%
 ### BEGIN SOLUTION
-answer_q6 = "a"
+# (7) with β1 = 1, β2 = 0 reads r'(0) = q'(1), r''(0) = q''(1): C² continuity
+right = "the two parametrizations meet with C² continuity there"
+answer_q6 = "".join(x for x, label in DATA["q6"]["options"].items() if label == right)
 ### END SOLUTION
 ### STUDENT answer_q6 = ...
 
@@ -166,17 +183,16 @@ check("hw02.q6", answer_q6)
 # %% [markdown]
 # ## Question 7 — read a picture
 #
-# The curve below has four cubic segments and three joints A, B, C. Next to it, along the
-# parameter and with one colour per segment: the direction angle of its unit tangent, and its
-# signed curvature. **Which joint is $G^1$ but not $G^2$?** Answer with one letter.
+# The curve below has four cubic segments and three joints, lettered A, B, C in the order of your
+# data. Next to it, along the parameter and with one colour per segment: the direction angle of
+# its unit tangent, and its signed curvature. **Which joint is $G^1$ but not $G^2$?** Answer with
+# one letter.
 
 # %%
-segments_q7 = [
-    [[0, 0], [1, 1], [2, 1.5], [3, 1.5]],
-    [[3, 1.5], [4, 1.5], [5, 0.75], [6, 0.25]],
-    [[6, 0.25], [7, -0.25], [8, -0.5], [9, 0.5]],
-    [[9, 0.5], [10, 0.5], [11, 1.5], [12, 1.0]],
-]
+print(DATA["q7"]["text"])  # your data
+
+# %%
+segments_q7, labels_q7 = DATA["q7"]["segments"], DATA["q7"]["labels"]
 curve_q7 = PiecewiseBezier(segments_q7)
 fig, (ax_curve, ax_angle, ax_kappa) = plt.subplots(1, 3, figsize=(12, 3.2), layout="constrained")
 uu = np.linspace(0.0, 1.0, 200)
@@ -187,11 +203,11 @@ for i in range(curve_q7.n_segments):
     ax_curve.plot(p[:, 0], p[:, 1], lw=2)
     ax_angle.plot(i + uu, angle, lw=2)
     ax_kappa.plot(i + uu, kappa, lw=2)
-for name, (x, y) in zip("ABC", curve_q7.joint_points, strict=True):
+for name, (x, y) in zip(labels_q7, curve_q7.joint_points, strict=True):
     ax_curve.plot(x, y, "ko", ms=4)
     ax_curve.annotate(name, (x, y), xytext=(0, 8), textcoords="offset points", ha="center")
 for ax, title in ((ax_angle, "direction of the unit tangent (degrees)"), (ax_kappa, "signed curvature κ")):
-    ax.set_xticks(curve_q7.joint_parameters, list("ABC"))
+    ax.set_xticks(curve_q7.joint_parameters, list(labels_q7))
     ax.grid(axis="x", ls=":")
     ax.set_title(title)
     ax.set_xlabel("joint")
@@ -201,7 +217,7 @@ plt.show()
 
 # %%
 ### BEGIN SOLUTION
-answer_q7 = "A"
+answer_q7 = labels_q7[0]  # the first joint along the curve (see below)
 ### END SOLUTION
 ### STUDENT answer_q7 = ...
 
@@ -209,10 +225,11 @@ answer_q7 = "A"
 check("hw02.q7", answer_q7)
 
 # %% [markdown] solution
-# At A the tangent direction is continuous but κ jumps: $G^1$, not $G^2$. At B the two segments
-# are the two halves of one cubic (de Casteljau subdivision), so everything is continuous. At C
-# the tangent direction jumps by 45°: a corner, not even $G^1$ — a jump of κ alone does not tell
-# a corner from a $G^1$ joint.
+# Along the curve: at the first joint the tangent direction is continuous but κ jumps: $G^1$, not
+# $G^2$. At the second the two segments are the two halves of one cubic (de Casteljau
+# subdivision), so everything is continuous. At the third the tangent direction jumps by 45°: a
+# corner, not even $G^1$ — a jump of κ alone does not tell a corner from a $G^1$ joint. (With the
+# example data the joints are A, B, C; every variant letters them in its own order.)
 
 # %% [markdown]
 # ## Check everything

@@ -24,6 +24,11 @@
 # cell, then run the **check cell** below it: ✓ right, ✗ what is wrong, … not answered yet.
 # The checks are feedback; the grade comes from other tests with other data. Keep the names, do
 # not delete cells, and before you hand in run *Kernel → Restart Kernel and Run All Cells*.
+#
+# **Your own data.** Every student gets their own numbers: paste the *variant code* your
+# instructor gave you into `VARIANT` below. The cells marked "your data" print the data of each
+# question; your code should use `DATA[...]` rather than typing the numbers. With `VARIANT = ""`
+# you get the example data (fine for practice, but graded on your own data it scores nothing).
 
 # %% [markdown]
 # ## Preparations
@@ -33,23 +38,29 @@ import matplotlib.pyplot as plt
 import numpy as np
 import sympy as sp
 
-from course_lib import PiecewiseBezier
+from course_lib import PiecewiseBezier, variants
 from course_lib.checks import check, check_all
 
 HOMEWORK = "hw03"
+VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "ABCDE23456"
+DATA = variants.data(HOMEWORK, VARIANT)
 
 # Finn's G1 control points d_-1, d_0, ..., d_6 for L = 3 segments (row j holds d_{j-1})
-D = np.array([[0, 0], [1, 2], [2, 3], [4, 3], [5, 1], [6, 0], [8, 1], [9, 3]], dtype=float)
+D = np.array(DATA["D"]["points"])
+print(DATA["D"]["text"])  # your data
 
 # %% [markdown]
 # ## Question 1 — one joint point (compute)
 #
-# With knots $t_0, t_1, t_2 = 0, 1, 3$, compute the joint point $\mathbf p_3$ between
-# $\mathbf p_2 = \mathbf d_1 = (2, 3)$ and $\mathbf p_4 = \mathbf d_2 = (4, 3)$.
+# With the knots $t_0, t_1, t_2$ of your data (`DATA["q1"]["knots"]`), compute the joint point
+# $\mathbf p_3$ between $\mathbf p_2 = \mathbf d_1$ and $\mathbf p_4 = \mathbf d_2$.
+
+# %%
+print(DATA["q1"]["text"])  # your data
 
 # %%
 ### BEGIN SOLUTION
-t0, t1, t2 = 0.0, 1.0, 3.0
+t0, t1, t2 = DATA["q1"]["knots"]
 answer_q1 = ((t2 - t1) * D[2] + (t1 - t0) * D[3]) / (t2 - t0)
 ### END SOLUTION
 ### STUDENT answer_q1 = ...
@@ -90,14 +101,14 @@ check("hw03.q2", g1_bezier_control_points)
 # ## Question 3 — Finn's exercise 19.8.2 with three knot sequences (compute)
 #
 # For the control points `D` of the Preparations cell, construct the C0 Bézier control points
-# for the knot sequences
-#
-# (a) $0, 1, 2, 4$  (b) $0, 3, 6, 9$  (c) $0, 2, 3, 6$
-#
-# and answer with the list `[P_a, P_b, P_c]` (each of shape `(10, 2)`).
+# for the three knot sequences (a), (b), (c) of your data (`DATA["q3"]["knots"]`), and answer
+# with the list `[P_a, P_b, P_c]` (each of shape `(10, 2)`).
 
 # %%
-knots_a, knots_b, knots_c = [0, 1, 2, 4], [0, 3, 6, 9], [0, 2, 3, 6]
+print(DATA["q3"]["text"])  # your data
+
+# %%
+knots_a, knots_b, knots_c = (DATA["q3"]["knots"][x] for x in "abc")
 ### BEGIN SOLUTION
 answer_q3 = [g1_bezier_control_points(D, k) for k in (knots_a, knots_b, knots_c)]
 ### END SOLUTION
@@ -115,7 +126,7 @@ ax.plot(D[:, 0], D[:, 1], "o:", color="0.5", label="G1 control points d")
 for label, P, k in zip("abc", answer_q3, (knots_a, knots_b, knots_c), strict=True):
     spline = PiecewiseBezier.from_control_points(P, 3, knots=k)
     pts = spline.evaluate(np.linspace(*spline.domain, 300))
-    ax.plot(pts[:, 0], pts[:, 1], label=f"({label}) knots {k}")
+    ax.plot(pts[:, 0], pts[:, 1], label=f"({label}) knots " + ", ".join(f"{v:g}" for v in k))
     ax.plot(P[3::3][:-1, 0], P[3::3][:-1, 1], "s", ms=4, color=ax.lines[-1].get_color())
 ax.set_aspect("equal")
 ax.legend(fontsize=8)
@@ -130,7 +141,9 @@ plt.show()
 
 # %%
 ### BEGIN SOLUTION
-answer_q4 = "b"
+# midpoints everywhere <=> equal knot intervals (the barycentric weights are then 1/2)
+uniform = [x for x, k in zip("abc", (knots_a, knots_b, knots_c), strict=True) if len(set(np.diff(k))) == 1]
+answer_q4 = ", ".join(uniform)
 ### END SOLUTION
 ### STUDENT answer_q4 = ...
 
@@ -142,18 +155,23 @@ check("hw03.q4", answer_q4)
 #
 # In the *global* parameter $t$, segment $i$ is the cubic with control points
 # $\mathbf p_{3i-3}, \dots, \mathbf p_{3i}$ in the local variable $s = (t - t_{i-1})/(t_i - t_{i-1})$
-# (seed 004 §19.7). For knot sequence (c), compute the derivative $d\mathbf b/dt$ at the joint
-# $t = t_1$ from the left and from the right; answer `np.array([left, right])` (shape `(2, 2)`).
+# (seed 004 §19.7). For the knot sequence of question 3 named in your data, compute the derivative
+# $d\mathbf b/dt$ at the joint $t = t_1$ from the left and from the right; answer
+# `np.array([left, right])` (shape `(2, 2)`).
+
+# %%
+print(DATA["q5"]["text"])  # your data
 
 # %%
 ### BEGIN SOLUTION
-P = g1_bezier_control_points(D, knots_c)
-t = np.asarray(knots_c, dtype=float)
+knots_q5 = DATA["q3"]["knots"][DATA["q5"]["letter"]]
+P = g1_bezier_control_points(D, knots_q5)
+t = np.asarray(knots_q5, dtype=float)
 left = 3 * (P[3] - P[2]) / (t[1] - t[0])
 right = 3 * (P[4] - P[3]) / (t[2] - t[1])
 answer_q5 = np.array([left, right])
 # the curve class evaluates in the global parameter (at a joint: the segment starting there)
-spline = PiecewiseBezier.from_control_points(P, 3, knots=knots_c)
+spline = PiecewiseBezier.from_control_points(P, 3, knots=knots_q5)
 assert np.allclose(spline.evaluate(t[1], n=1), right)
 ### END SOLUTION
 ### STUDENT answer_q5 = ...
