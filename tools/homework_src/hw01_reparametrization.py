@@ -3,7 +3,7 @@
 # ruff: noqa: B018
 
 # %% [markdown]
-# *Geometric continuity of parametric curves* · Homework 1 of 4 · after the lecture
+# *Geometric continuity of parametric curves* · Homework 1 of 5 · after the lecture
 # [01 Reparametrization](../notebooks/01_reparametrization.ipynb) (seed 000 §1–4, seed 004 §19.2).
 #
 # # Homework 1 — Parametrizations, the unit tangent and reparametrization

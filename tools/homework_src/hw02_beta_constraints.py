@@ -3,7 +3,7 @@
 # ruff: noqa: B018
 
 # %% [markdown]
-# *Geometric continuity of parametric curves* · Homework 2 of 4 · after the lecture
+# *Geometric continuity of parametric curves* · Homework 2 of 5 · after the lecture
 # [02 Beta-constraints](../notebooks/02_beta_constraints.ipynb) (seed 000 §5–7, seed 001 eq. 2.7).
 #
 # # Homework 2 — The Beta-constraints
