@@ -71,7 +71,7 @@ Q5_CASES = [
 
 
 def _cross(a, b):
-    return a[0] * b[1] - a[1] * b[0]
+    return a[0] * b[1] - b[0] * a[1]
 
 
 @cache
