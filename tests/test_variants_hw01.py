@@ -5,20 +5,15 @@
   curve, ``f' > 0``, no ``f(s) = s`` or ``f'(s) = 1`` blind spot, ``|κ|`` away from 0 and 1,
   exactly one right option of distinct ones, options a permutation), the hidden test's expected
   values are finite, and the feedback check marks them ✓.
-* The solution notebook, executed in-process with ``VARIANT`` set, scores full marks through
-  :class:`LocalStudent` on 50 variants; the same answers graded on another student's data lose
-  the points of every question whose answer differs.
+* (The solution notebook graded on 50 variants, and on another student's data, is tested for
+  every homework with variants in ``tests/test_variants_solutions.py``.)
 * The check ✓ ⇔ full points equivalence holds on non-default variants, for accepted forms and
   for typical mistakes computed from each variant's data.
 """
 
 from __future__ import annotations
 
-import functools
-import importlib.util
 import math
-import sys
-from pathlib import Path
 
 import matplotlib
 import numpy as np
@@ -28,28 +23,15 @@ from scipy.integrate import quad
 
 matplotlib.use("Agg")
 
+from _variant_support import VariantHomework
+
 from course_lib import variants
 from course_lib.checks import check, questions, registry
 from course_lib.checks._variants_hw01 import Q6_OPTIONS
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "tools"))
-from grading.protocol import LocalStudent, run_question  # noqa: E402
-
-SECRET = b"a test secret of the course, 32b"
-
-
-def _load(name: str, path: Path):
-    spec = importlib.util.spec_from_file_location(name, path)
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[name] = module
-    spec.loader.exec_module(module)
-    return module
-
-
-HIDDEN = _load("hidden_hw01_variants", ROOT / "solutions" / "hidden_tests" / "hw01.py")
-build = _load("build_homework_variants", ROOT / "tools" / "build_homework.py")
-CODES = [variants.code_for(SECRET, "hw01", f"student-{i:04d}") for i in range(1000)]
+HOME = VariantHomework("hw01")
+HIDDEN = HOME.hidden
+CODES = HOME.codes
 
 
 @pytest.fixture(autouse=True)
@@ -59,7 +41,7 @@ def _default_afterwards():
 
 
 def _grade(q: str, namespace: dict, data: dict) -> tuple[float, str]:
-    return run_question(functools.partial(getattr(HIDDEN, q), data=data), LocalStudent(namespace))
+    return HOME.grade(q, namespace, data)
 
 
 # ------------------------------------------------------------------ the default data
@@ -67,7 +49,12 @@ def test_the_default_variant_is_the_historical_data():
     d = variants.data("hw01", "")
     assert d["q1"]["x"] == [0, 1, 1] and d["q1"]["y"] == [0, -2, 0, 1] and d["q1"]["t"] == 1
     assert d["q1"]["text"] == "c(t) = (t² + t, t³ − 2t),  at t = 1"
-    assert d["q3"]["options"] == {"a": "f(s) = s²", "b": "f(s) = 1 − s", "c": "f(s) = 2s", "d": "f(s) = (s + s²)/2"}
+    assert d["q3"]["options"] == {
+        "a": "f(s) = s²",
+        "b": "f(s) = 1 − s",
+        "c": "f(s) = 2s",
+        "d": "f(s) = (s + s²)/2",
+    }
     assert d["q4"] == {"k": 1.0, "u": 1.0, "text": "q(u) = (u, u²),  at u = 1"}
     assert d["q5"]["f"] == [0, 0.5, 0.5] and d["q5"]["s"] == 0.75 and d["q5"]["k"] == 1
     assert d["q6"]["options"] == dict(zip("abcde", Q6_OPTIONS, strict=True))
@@ -92,7 +79,11 @@ def test_codes_are_validated():
 
 # ------------------------------------------------------------------ 1,000 variants: well posed
 def _sampled_min_slope(coef) -> float:  # independent of the hidden test's closed form
-    return float(np.polynomial.polynomial.polyval(np.linspace(0, 1, 2001), np.polynomial.polynomial.polyder(coef)).min())
+    return float(
+        np.polynomial.polynomial.polyval(
+            np.linspace(0, 1, 2001), np.polynomial.polynomial.polyder(coef)
+        ).min()
+    )
 
 
 def _far(a, b, rel=1e-3) -> bool:
@@ -132,11 +123,17 @@ def test_a_thousand_variants_are_well_posed_and_well_conditioned():
         opts = d["q3"]["coefficients"]
         assert sorted(opts) == list("abcd") and len({tuple(c) for c in opts.values()}) == 4, where
         assert len(set(d["q3"]["options"].values())) == 4, where
-        good = [x_ for x_, c in opts.items() if c[0] == 0 and math.isclose(sum(c), 1) and _sampled_min_slope(c) > 0]
+        good = [
+            x_
+            for x_, c in opts.items()
+            if c[0] == 0 and math.isclose(sum(c), 1) and _sampled_min_slope(c) > 0
+        ]
         assert len(good) == 1 and opts[good[0]] != d["q5"]["f"], where  # q5 does not give q3 away
         for x_, c in opts.items():  # the wrong ones fail clearly, not by a hair
             if x_ != good[0]:
-                assert abs(c[0]) >= 0.5 or abs(sum(c) - 1) >= 0.5 or _sampled_min_slope(c) <= 0, where
+                assert abs(c[0]) >= 0.5 or abs(sum(c) - 1) >= 0.5 or _sampled_min_slope(c) <= 0, (
+                    where
+                )
         # q4, q5, q7: one parabola (u, k u²), k ≠ 0
         k, u = d["q4"]["k"], d["q4"]["u"]
         assert k == d["q5"]["k"] == d["q7"]["k"] and abs(k) >= 0.25 and abs(u) >= 0.25, where
@@ -155,14 +152,20 @@ def test_a_thousand_variants_are_well_posed_and_well_conditioned():
         assert 0.02 <= abs(worked["answer_q4"]) and abs(abs(worked["answer_q4"]) - 1) >= 0.1, where
         assert worked["answer_q3"] == good[0], where
         assert worked["answer_q6"] == ",".join(
-            x_ for x_, label in sorted(d["q6"]["options"].items()) if label in ("the unit tangent vector", "the curvature vector")
+            x_
+            for x_, label in sorted(d["q6"]["options"].items())
+            if label in ("the unit tangent vector", "the curvature vector")
         ), where
         for q, wrong in _mistakes(d).items():
             for w in wrong:
                 assert _far(w, worked[f"answer_{q}"]), (where, q, w)
     # the variants really vary
-    assert len({d["q1"]["text"] for d in datas}) > 300 and len({d["q5"]["text"] for d in datas}) > 200
-    assert len({d["q3"]["text"] for d in datas}) > 200 and len({d["q6"]["text"] for d in datas}) == 120
+    assert (
+        len({d["q1"]["text"] for d in datas}) > 300 and len({d["q5"]["text"] for d in datas}) > 200
+    )
+    assert (
+        len({d["q3"]["text"] for d in datas}) > 200 and len({d["q6"]["text"] for d in datas}) == 120
+    )
     assert {HIDDEN.answers_for(d)["answer_q3"] for d in datas} == set("abcd")
 
 
@@ -191,18 +194,34 @@ def test_check_and_grade_agree_on_other_variants(code):
     d = variants.data("hw01", code)
     worked = HIDDEN.answers_for(d)
     forms = {
-        "q1": [np.array(worked["answer_q1"]), list(worked["answer_q1"]), sp.Matrix(worked["answer_q1"])],
+        "q1": [
+            np.array(worked["answer_q1"]),
+            list(worked["answer_q1"]),
+            sp.Matrix(worked["answer_q1"]),
+        ],
         "q3": [worked["answer_q3"], worked["answer_q3"].upper(), [worked["answer_q3"]]],
         "q4": [worked["answer_q4"], np.array([worked["answer_q4"]])],
         "q5": [np.array(worked["answer_q5"]), tuple(worked["answer_q5"])],
-        "q6": [worked["answer_q6"], worked["answer_q6"].replace(",", ", ").upper(), worked["answer_q6"].split(",")],
+        "q6": [
+            worked["answer_q6"],
+            worked["answer_q6"].replace(",", ", ").upper(),
+            worked["answer_q6"].split(","),
+        ],
         "q7": [worked["answer_q7"], [worked["answer_q7"]]],
     }
     right3, right6 = worked["answer_q3"], worked["answer_q6"].split(",")
     wrong = dict(_mistakes(d))
-    wrong["q1"] = [-np.array(worked["answer_q1"]), np.array(worked["answer_q1"])[::-1], np.array(worked["answer_q1"]) * 2]
+    wrong["q1"] = [
+        -np.array(worked["answer_q1"]),
+        np.array(worked["answer_q1"])[::-1],
+        np.array(worked["answer_q1"]) * 2,
+    ]
     wrong["q3"] = [x for x in "abcd" if x != right3]
-    wrong["q6"] = [right6[0], ",".join(sorted(set("abcde") - set(right6))), ",".join([*right6, min(set("abcde") - set(right6))])]
+    wrong["q6"] = [
+        right6[0],
+        ",".join(sorted(set("abcde") - set(right6))),
+        ",".join([*right6, min(set("abcde") - set(right6))]),
+    ]
     for q in forms:
         name = f"answer_{q}"
         for value in forms[q]:
@@ -211,65 +230,3 @@ def test_check_and_grade_agree_on_other_variants(code):
         for value in wrong[q]:
             assert not check(f"hw01.{q}", value).passed, (code, q, value)
             assert _grade(q, {name: value}, d)[0] < 1.0, (code, q, value)
-
-
-# ------------------------------------------------------------------ the solution notebook on variants
-@functools.cache
-def _solution_source() -> list[str]:
-    (source,) = [s for s in build.sources() if s.stem.startswith("hw01")]
-    nb = build.build(source, "solution")
-    cells = [c.source for c in nb.cells if c.cell_type == "code"]
-    assert 'VARIANT = ""' in cells[0]
-    return cells
-
-
-def solution_namespace(code: str) -> dict:
-    """The globals of the solution notebook's code cells run in-process with ``VARIANT = code``."""
-    import matplotlib.pyplot as plt
-
-    cells = list(_solution_source())
-    cells[0] = cells[0].replace('VARIANT = ""', f"VARIANT = {code!r}", 1)
-    ns: dict = {"__name__": "hw01_solution_variant"}
-    try:
-        for k, cell in enumerate(cells):
-            exec(compile(cell, f"hw01-solution-cell{k}", "exec"), ns)
-    finally:
-        plt.close("all")
-    return ns
-
-
-SOLVED = CODES[:50]
-
-
-@functools.cache
-def _solved(code: str) -> dict:
-    return solution_namespace(code)
-
-
-@pytest.mark.parametrize("code", SOLVED)
-def test_the_solution_scores_full_marks_on_its_variant(code):
-    ns = _solved(code)  # its last cell asserts that every check passes on this variant
-    d = variants.data("hw01", code)
-    for q in HIDDEN.POINTS:
-        fraction, note = _grade(q, ns, d)
-        assert fraction == 1.0, f"{code} {q}: {fraction} ({note})"
-
-
-def test_a_solution_done_with_another_code_loses_the_points_of_every_answer_that_differs():
-    pairs = list(zip(SOLVED[:10], SOLVED[10:20], strict=True))
-    lost = 0
-    for a, b in pairs:
-        da, db = variants.data("hw01", a), variants.data("hw01", b)
-        assert da != db
-        wa, wb = HIDDEN.answers_for(da), HIDDEN.answers_for(db)
-        ns = _solved(a)
-        total = 0.0
-        for q, points in HIDDEN.POINTS.items():
-            fraction, _ = _grade(q, ns, db)
-            name = f"answer_{q}"
-            if name in wa and wa[name] != wb[name]:
-                assert fraction < 1.0, (a, b, q)
-                lost += 1
-            total += fraction * points
-        assert total < sum(HIDDEN.POINTS.values()), (a, b)
-    assert lost >= 4 * len(pairs)  # q1, q4, q5, q7 (rarely equal); q3, q6 coincide by chance (1/4, 1/10)

@@ -6,20 +6,15 @@
   options a permutation, exactly one ``G1``-only joint), the Beta-constraints hold exactly, the
   hidden test's expected values are finite and far from the typical mistakes, and the feedback
   check marks them ✓.
-* The solution notebook, executed in-process with ``VARIANT`` set, scores full marks through
-  :class:`LocalStudent` on 50 variants; the same answers graded on another student's data lose
-  the points of every question whose answer differs.
+* (The solution notebook graded on 50 variants, and on another student's data, is tested for
+  every homework with variants in ``tests/test_variants_solutions.py``.)
 * The check ✓ ⇔ full points equivalence holds on non-default variants, for accepted forms and
   for typical mistakes computed from each variant's data.
 """
 
 from __future__ import annotations
 
-import functools
-import importlib.util
 import itertools
-import sys
-from pathlib import Path
 
 import matplotlib
 import numpy as np
@@ -28,29 +23,18 @@ import sympy as sp
 
 matplotlib.use("Agg")
 
+from _variant_support import VariantHomework
+
 from course_lib import variants
 from course_lib.checks import check, questions, registry
 from course_lib.checks._variants_hw02 import Q6_OPTIONS, Q7_SEGMENTS
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "tools"))
-from grading.protocol import LocalStudent, run_question  # noqa: E402
-
-SECRET = b"a test secret of the course, 32b"
 C2 = "the two parametrizations meet with C² continuity there"
 
 
-def _load(name: str, path: Path):
-    spec = importlib.util.spec_from_file_location(name, path)
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[name] = module
-    spec.loader.exec_module(module)
-    return module
-
-
-HIDDEN = _load("hidden_hw02_variants", ROOT / "solutions" / "hidden_tests" / "hw02.py")
-build = _load("build_homework_variants_hw02", ROOT / "tools" / "build_homework.py")
-CODES = [variants.code_for(SECRET, "hw02", f"student-{i:04d}") for i in range(1000)]
+HOME = VariantHomework("hw02")
+HIDDEN = HOME.hidden
+CODES = HOME.codes
 DATA_QUESTIONS = ("q1", "q2", "q5", "q6", "q7")
 
 
@@ -61,7 +45,7 @@ def _default_afterwards():
 
 
 def _grade(q: str, namespace: dict, data: dict) -> tuple[float, str]:
-    return run_question(functools.partial(getattr(HIDDEN, q), data=data), LocalStudent(namespace))
+    return HOME.grade(q, namespace, data)
 
 
 # ------------------------------------------------------------------ the default data
@@ -69,8 +53,18 @@ def test_the_default_variant_is_the_historical_data():
     d = variants.data("hw02", "")
     assert d["q1"]["q1"] == [2, -1] and d["q1"]["r1"] == [5, -2.5]
     assert d["q1"]["text"] == "q'(1) = (2, −1),  r'(0) = (5, −2.5)"
-    assert (d["q2"]["q1"], d["q2"]["q2"], d["q2"]["r1"], d["q2"]["r2"]) == ([1, 2], [0, 2], [3, 6], [-4, 10])
-    assert (d["q5"]["q1"], d["q5"]["q2"], d["q5"]["beta1"], d["q5"]["beta2"]) == ([2, 0], [1, -3], 0.5, 2)
+    assert (d["q2"]["q1"], d["q2"]["q2"], d["q2"]["r1"], d["q2"]["r2"]) == (
+        [1, 2],
+        [0, 2],
+        [3, 6],
+        [-4, 10],
+    )
+    assert (d["q5"]["q1"], d["q5"]["q2"], d["q5"]["beta1"], d["q5"]["beta2"]) == (
+        [2, 0],
+        [1, -3],
+        0.5,
+        2,
+    )
     assert d["q6"]["options"] == dict(zip("abcd", Q6_OPTIONS, strict=True)) and Q6_OPTIONS[0] == C2
     assert d["q7"]["labels"] == "ABC"
     assert d["q7"]["segments"] == [[list(map(float, p)) for p in s] for s in Q7_SEGMENTS]
@@ -126,8 +120,18 @@ def _mistakes(d: dict) -> dict[str, list]:
     f1, f2, e1, e2 = np.array(f["q1"]), np.array(f["q2"]), f["beta1"], f["beta2"]
     return {
         "q1": [1 / b, -b],  # upside down; a negative β1
-        "q2": [[c1, -c2], *([c1, u] for u in unsquared), [c1, 0.0], [1 / c1, c2]],  # sign; unsquared; no β2
-        "q5": [e1 * f2 + e2 * f1, e1**2 * f1 + e2 * f2, e1**2 * f2, e2 * f1],  # unsquared; swapped; one term
+        "q2": [
+            [c1, -c2],
+            *([c1, u] for u in unsquared),
+            [c1, 0.0],
+            [1 / c1, c2],
+        ],  # sign; unsquared; no β2
+        "q5": [
+            e1 * f2 + e2 * f1,
+            e1**2 * f1 + e2 * f2,
+            e1**2 * f2,
+            e2 * f1,
+        ],  # unsquared; swapped; one term
     }
 
 
@@ -161,7 +165,9 @@ def test_a_thousand_variants_are_well_posed_and_well_conditioned():
         worked = HIDDEN.answers_for(d)
         for name in ("answer_q1", "answer_q2", "answer_q5"):
             assert np.all(np.isfinite(worked[name])), (where, name)
-        assert np.isclose(worked["answer_q1"], b) and np.allclose(worked["answer_q2"], [c1, c2]), where
+        assert np.isclose(worked["answer_q1"], b) and np.allclose(worked["answer_q2"], [c1, c2]), (
+            where
+        )
         assert np.allclose(worked["answer_q5"], e1**2 * f2 + e2 * f1), where
         assert d["q6"]["options"][worked["answer_q6"]] == C2, where
         assert worked["answer_q7"] == d["q7"]["labels"][0], where
@@ -171,7 +177,9 @@ def test_a_thousand_variants_are_well_posed_and_well_conditioned():
     # the variants really vary
     for q in ("q1", "q2", "q5"):
         assert len({d[q]["text"] for d in datas}) > 300, q
-    assert len({d["q6"]["text"] for d in datas}) == 24 and len({d["q7"]["labels"] for d in datas}) == 6
+    assert (
+        len({d["q6"]["text"] for d in datas}) == 24 and len({d["q7"]["labels"] for d in datas}) == 6
+    )
     assert {HIDDEN.answers_for(d)["answer_q6"] for d in datas} == set("abcd")
     assert {HIDDEN.answers_for(d)["answer_q7"] for d in datas} == set("ABC")
 
@@ -221,67 +229,3 @@ def test_the_old_answers_are_wrong_on_most_variants():
     for name in ("answer_q1", "answer_q2", "answer_q5", "answer_q6", "answer_q7"):
         same = sum(w[name] == old[name] for w in worked)
         assert same <= 200 * (0.4 if name in ("answer_q6", "answer_q7") else 0.1), (name, same)
-
-
-# ------------------------------------------------------------------ the solution notebook on variants
-@functools.cache
-def _solution_source() -> list[str]:
-    (source,) = [s for s in build.sources() if s.stem.startswith("hw02")]
-    nb = build.build(source, "solution")
-    cells = [c.source for c in nb.cells if c.cell_type == "code"]
-    assert 'VARIANT = ""' in cells[0]
-    return cells
-
-
-def solution_namespace(code: str) -> dict:
-    """The globals of the solution notebook's code cells run in-process with ``VARIANT = code``."""
-    import matplotlib.pyplot as plt
-
-    cells = list(_solution_source())
-    cells[0] = cells[0].replace('VARIANT = ""', f"VARIANT = {code!r}", 1)
-    ns: dict = {"__name__": "hw02_solution_variant"}
-    try:
-        for k, cell in enumerate(cells):
-            exec(compile(cell, f"hw02-solution-cell{k}", "exec"), ns)
-    finally:
-        plt.close("all")
-    return ns
-
-
-SOLVED = CODES[:50]
-
-
-@functools.cache
-def _solved(code: str) -> dict:
-    return solution_namespace(code)
-
-
-@pytest.mark.parametrize("code", SOLVED)
-def test_the_solution_scores_full_marks_on_its_variant(code):
-    ns = _solved(code)  # its last cell asserts that every check passes on this variant
-    d = variants.data("hw02", code)
-    for q in HIDDEN.POINTS:
-        fraction, note = _grade(q, ns, d)
-        assert fraction == 1.0, f"{code} {q}: {fraction} ({note})"
-
-
-def test_a_solution_done_with_another_code_loses_the_points_of_every_answer_that_differs():
-    pairs = list(zip(SOLVED[:10], SOLVED[10:20], strict=True))
-    lost = 0
-    for a, b in pairs:
-        da, db = variants.data("hw02", a), variants.data("hw02", b)
-        assert da != db
-        wa, wb = HIDDEN.answers_for(da), HIDDEN.answers_for(db)
-        ns = _solved(a)
-        total = 0.0
-        for q, points in HIDDEN.POINTS.items():
-            fraction, _ = _grade(q, ns, db)
-            name = f"answer_{q}"
-            if q in DATA_QUESTIONS and wa[name] != wb[name]:
-                assert fraction < 1.0, (a, b, q)
-                lost += 1
-            elif q in ("q3", "q4"):
-                assert fraction == 1.0, (a, b, q)  # the same for everyone
-            total += fraction * points
-        assert total < sum(HIDDEN.POINTS.values()), (a, b)
-    assert lost >= 3 * len(pairs)  # q1, q2, q5 (rarely equal); q6, q7 coincide by chance (1/4, 1/3)

@@ -6,19 +6,13 @@
   exactly one uniform knot sequence of three distinct ones in q3, local ≠ global derivatives in
   q5), the hidden test's expected values are finite and far from the typical mistakes, and the
   feedback check marks them ✓.
-* The solution notebook, executed in-process with ``VARIANT`` set, scores full marks through
-  :class:`LocalStudent` on 50 variants; the same answers graded on another student's data lose
-  the points of every question whose answer differs.
+* (The solution notebook graded on 50 variants, and on another student's data, is tested for
+  every homework with variants in ``tests/test_variants_solutions.py``.)
 * The check ✓ ⇔ full points equivalence holds on non-default variants, for accepted forms and
   for typical mistakes computed from each variant's data.
 """
 
 from __future__ import annotations
-
-import functools
-import importlib.util
-import sys
-from pathlib import Path
 
 import matplotlib
 import numpy as np
@@ -26,28 +20,15 @@ import pytest
 
 matplotlib.use("Agg")
 
+from _variant_support import VariantHomework, differ
+
 from course_lib import variants
 from course_lib.checks import check
 from course_lib.checks._variants_hw03 import D_DEFAULT
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "tools"))
-from grading.protocol import LocalStudent, run_question  # noqa: E402
-
-SECRET = b"a test secret of the course, 32b"
-
-
-def _load(name: str, path: Path):
-    spec = importlib.util.spec_from_file_location(name, path)
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[name] = module
-    spec.loader.exec_module(module)
-    return module
-
-
-HIDDEN = _load("hidden_hw03_variants", ROOT / "solutions" / "hidden_tests" / "hw03.py")
-build = _load("build_homework_variants_hw03", ROOT / "tools" / "build_homework.py")
-CODES = [variants.code_for(SECRET, "hw03", f"student-{i:04d}") for i in range(1000)]
+HOME = VariantHomework("hw03")
+HIDDEN = HOME.hidden
+CODES = HOME.codes
 DATA_QUESTIONS = ("q1", "q3", "q4", "q5")
 
 
@@ -58,13 +39,17 @@ def _default_afterwards():
 
 
 def _grade(q: str, namespace: dict, data: dict) -> tuple[float, str]:
-    return run_question(functools.partial(getattr(HIDDEN, q), data=data), LocalStudent(namespace))
+    return HOME.grade(q, namespace, data)
 
 
 # ------------------------------------------------------------------ the default data
 def test_the_default_variant_is_the_historical_data():
     d = variants.data("hw03", "")
-    assert d["D"]["points"] == D_DEFAULT == [[0, 0], [1, 2], [2, 3], [4, 3], [5, 1], [6, 0], [8, 1], [9, 3]]
+    assert (
+        d["D"]["points"]
+        == D_DEFAULT
+        == [[0, 0], [1, 2], [2, 3], [4, 3], [5, 1], [6, 0], [8, 1], [9, 3]]
+    )
     assert d["q1"]["knots"] == [0, 1, 3]
     assert d["q3"]["knots"] == {"a": [0, 1, 2, 4], "b": [0, 3, 6, 9], "c": [0, 2, 3, 6]}
     assert d["q5"]["knots"] == [0, 2, 3] and d["q5"]["letter"] == "c"
@@ -96,7 +81,9 @@ def _mistakes(d: dict) -> dict[str, list]:
     p3 = ((s2 - s1) * p2 + (s1 - s0) * p4) / (s2 - s0)
     return {
         "q1": [  # the swapped ratio; the midpoint; the other end's weight
-            ((t1 - t0) * p2 + (t2 - t1) * p4) / (t2 - t0), (p2 + p4) / 2, p2 + (t2 - t1) / (t2 - t0) * (p4 - p2),
+            ((t1 - t0) * p2 + (t2 - t1) * p4) / (t2 - t0),
+            (p2 + p4) / 2,
+            p2 + (t2 - t1) / (t2 - t0) * (p4 - p2),
         ],
         "q5": [  # in the local parameter (both sides, one side); from p3 at the midpoint
             [3 * (p3 - p2), 3 * (p4 - p3)],
@@ -118,7 +105,10 @@ def test_a_thousand_variants_are_well_posed_and_well_conditioned():
         knots = d["q3"]["knots"]
         assert sorted(knots) == list("abc") and len({tuple(k) for k in knots.values()}) == 3, where
         steps = {x: np.diff(k) for x, k in knots.items()}
-        assert all(len(k) == 4 and np.all(s >= 1) for k, s in zip(knots.values(), steps.values(), strict=True)), where
+        assert all(
+            len(k) == 4 and np.all(s >= 1)
+            for k, s in zip(knots.values(), steps.values(), strict=True)
+        ), where
         uniform = [x for x, s in steps.items() if np.all(s == s[0])]
         assert len(uniform) == 1, where
         letter = d["q5"]["letter"]
@@ -139,7 +129,9 @@ def test_a_thousand_variants_are_well_posed_and_well_conditioned():
             for w in wrong:
                 assert _far(w, worked[f"answer_{q}"]), (where, q, w)
     # the variants really vary
-    assert len({d["D"]["text"] for d in datas}) > 900 and len({d["q3"]["text"] for d in datas}) > 300
+    assert (
+        len({d["D"]["text"] for d in datas}) > 900 and len({d["q3"]["text"] for d in datas}) > 300
+    )
     assert len({d["q1"]["text"] for d in datas}) > 300
     assert {HIDDEN.answers_for(d)["answer_q4"] for d in datas} == set("abc")
     assert {d["q5"]["letter"] for d in datas} == set("abc")
@@ -169,7 +161,10 @@ def test_check_and_grade_agree_on_other_variants(code):
         "q5": [np.array(w5), [list(r) for r in w5]],
     }
     wrong = _mistakes(d)
-    wrong["q3"] = [P[::-1] if not np.allclose(P[0], P[2]) else [P[1], P[0], P[2]], [P[0], P[0], P[0]]]
+    wrong["q3"] = [
+        P[::-1] if not np.allclose(P[0], P[2]) else [P[1], P[0], P[2]],
+        [P[0], P[0], P[0]],
+    ]
     wrong["q4"] = [x for x in "abc" if x != w4] + [",".join("abc")]
     for q in forms:
         name = f"answer_{q}"
@@ -186,77 +181,5 @@ def test_the_old_answers_are_wrong_on_most_variants():
     old = HIDDEN.answers_for(variants.data("hw03", ""))
     worked = [HIDDEN.answers_for(variants.data("hw03", c)) for c in CODES[:200]]
     for name in ("answer_q1", "answer_q3", "answer_q4", "answer_q5"):
-        same = sum(not _differ(w[name], old[name]) for w in worked)
+        same = sum(not differ(w[name], old[name]) for w in worked)
         assert same <= 200 * (0.4 if name == "answer_q4" else 0.1), (name, same)
-
-
-# ------------------------------------------------------------------ the solution notebook on variants
-@functools.cache
-def _solution_source() -> list[str]:
-    (source,) = [s for s in build.sources() if s.stem.startswith("hw03")]
-    nb = build.build(source, "solution")
-    cells = [c.source for c in nb.cells if c.cell_type == "code"]
-    assert 'VARIANT = ""' in cells[0]
-    return cells
-
-
-def solution_namespace(code: str) -> dict:
-    """The globals of the solution notebook's code cells run in-process with ``VARIANT = code``."""
-    import matplotlib.pyplot as plt
-
-    cells = list(_solution_source())
-    cells[0] = cells[0].replace('VARIANT = ""', f"VARIANT = {code!r}", 1)
-    ns: dict = {"__name__": "hw03_solution_variant"}
-    try:
-        for k, cell in enumerate(cells):
-            exec(compile(cell, f"hw03-solution-cell{k}", "exec"), ns)
-    finally:
-        plt.close("all")
-    return ns
-
-
-SOLVED = CODES[:50]
-
-
-@functools.cache
-def _solved(code: str) -> dict:
-    return solution_namespace(code)
-
-
-@pytest.mark.parametrize("code", SOLVED)
-def test_the_solution_scores_full_marks_on_its_variant(code):
-    ns = _solved(code)  # its last cell asserts that every check passes on this variant
-    d = variants.data("hw03", code)
-    for q in HIDDEN.POINTS:
-        fraction, note = _grade(q, ns, d)
-        assert fraction == 1.0, f"{code} {q}: {fraction} ({note})"
-
-
-def _differ(a, b) -> bool:
-    if isinstance(a, str):
-        return a != b
-    if isinstance(a, dict):
-        return any(_differ(a[k], b[k]) for k in a)
-    return not np.allclose(a, b)
-
-
-def test_a_solution_done_with_another_code_loses_the_points_of_every_answer_that_differs():
-    pairs = list(zip(SOLVED[:10], SOLVED[10:20], strict=True))
-    lost = 0
-    for a, b in pairs:
-        da, db = variants.data("hw03", a), variants.data("hw03", b)
-        assert da != db
-        wa, wb = HIDDEN.answers_for(da), HIDDEN.answers_for(db)
-        ns = _solved(a)
-        total = 0.0
-        for q, points in HIDDEN.POINTS.items():
-            fraction, _ = _grade(q, ns, db)
-            name = f"answer_{q}"
-            if q in DATA_QUESTIONS and _differ(wa[name], wb[name]):
-                assert fraction < 1.0, (a, b, q)
-                lost += 1
-            elif q in ("q2", "q6", "q7"):
-                assert fraction == 1.0, (a, b, q)  # the same for everyone
-            total += fraction * points
-        assert total < sum(HIDDEN.POINTS.values()), (a, b)
-    assert lost >= 3 * len(pairs)  # q1, q3, q5 (rarely equal); q4 coincides by chance (1/3)

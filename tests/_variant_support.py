@@ -1,0 +1,80 @@
+"""What the tests of per-student variants share (``tests/test_variants_*.py``).
+
+A :class:`VariantHomework` holds one homework's hidden tests, 1,000 student codes made with a
+test secret, its grading through :class:`LocalStudent` on a variant's data, and the solution
+notebook's code cells run in-process with ``VARIANT`` set to a code.
+"""
+
+from __future__ import annotations
+
+import functools
+import importlib.util
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from course_lib import variants
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "tools"))
+from grading.protocol import LocalStudent, run_question  # noqa: E402
+
+SECRET = b"a test secret of the course, 32b"
+
+
+def load(name: str, path: Path):
+    """Import a module from its file (tools and hidden tests are not packages)."""
+    spec = importlib.util.spec_from_file_location(name, path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+build = load("build_homework_variants", ROOT / "tools" / "build_homework.py")
+
+
+class VariantHomework:
+    def __init__(self, hw: str) -> None:
+        self.hw = hw
+        self.hidden = load(
+            f"hidden_{hw}_variants", ROOT / "solutions" / "hidden_tests" / f"{hw}.py"
+        )
+        self.codes = [variants.code_for(SECRET, hw, f"student-{i:04d}") for i in range(1000)]
+
+    def grade(self, q: str, namespace: dict, data: dict) -> tuple[float, str]:
+        """One hidden test on ``data``, the answers read from ``namespace`` as the grader would."""
+        test = functools.partial(getattr(self.hidden, q), data=data)
+        return run_question(test, LocalStudent(namespace))
+
+    @functools.cached_property
+    def _solution_cells(self) -> list[str]:
+        (source,) = [s for s in build.sources() if s.stem.startswith(self.hw)]
+        cells = [c.source for c in build.build(source, "solution").cells if c.cell_type == "code"]
+        assert 'VARIANT = ""' in cells[0]
+        return cells
+
+    @functools.cache  # noqa: B019 - one instance per homework, kept for the session
+    def solution_namespace(self, code: str) -> dict:
+        """The globals of the solution notebook's code cells run with ``VARIANT = code``."""
+        import matplotlib.pyplot as plt
+
+        cells = list(self._solution_cells)
+        cells[0] = cells[0].replace('VARIANT = ""', f"VARIANT = {code!r}", 1)
+        ns: dict = {"__name__": f"{self.hw}_solution_variant"}
+        try:
+            for k, cell in enumerate(cells):
+                exec(compile(cell, f"{self.hw}-solution-cell{k}", "exec"), ns)
+        finally:
+            plt.close("all")
+        return ns
+
+
+def differ(a, b) -> bool:
+    """Are two worked answers different (letters, numbers, arrays, dicts of them)?"""
+    if isinstance(a, str):
+        return a != b
+    if isinstance(a, dict):
+        return any(differ(a[k], b[k]) for k in a)
+    return not np.allclose(a, b)
