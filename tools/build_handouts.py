@@ -21,7 +21,6 @@ import contextlib
 import functools
 import html
 import http.server
-import os
 import re
 import shutil
 import sys
@@ -31,9 +30,12 @@ from pathlib import Path
 from urllib.parse import urlparse
 
 ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "tools"))
+
+from chromium import CHROMIUM_ENV, find_chromium  # noqa: E402
+
 SITE = ROOT / "build" / "site"
 OUT = ROOT / "build" / "handouts"
-CHROMIUM_ENV = "COURSE_CHROMIUM"
 FOOTER = (
     '<div style="font-size:8px;width:100%;text-align:center;color:#555">'
     '{title} — Geometric continuity — <span class="pageNumber"></span>/'
@@ -60,17 +62,6 @@ MATH_HOOK_JS = """() => {
   };
   wait();
 }"""
-
-
-def find_chromium() -> str | None:
-    """``$COURSE_CHROMIUM`` when set, else Debian's /usr/bin/chromium or one on PATH."""
-    override = os.environ.get(CHROMIUM_ENV)
-    cands = (override,) if override else (
-        "/usr/bin/chromium", shutil.which("chromium"), shutil.which("chromium-browser"))
-    for cand in cands:
-        if cand and os.path.isfile(cand) and os.access(cand, os.X_OK):
-            return cand
-    return None
 
 
 class _QuietHandler(http.server.SimpleHTTPRequestHandler):

@@ -40,22 +40,49 @@ from urllib.parse import urlsplit
 
 ROOT = Path(__file__).resolve().parents[2]
 ARTIFACTS = ROOT / "test-artifacts"
-CHROMIUM_ENV = "COURSE_CHROMIUM"  # optional override of the browser executable
+sys.path.insert(0, str(ROOT / "tools"))
+# one rule for finding the browser, shared with the handouts (tools/chromium.py)
+from chromium import CHROMIUM_ENV as CHROMIUM_ENV  # noqa: E402
+from chromium import find_chromium as find_chromium  # noqa: E402
+
+# ----------------------------------------------------------------------------- the kernel behind a page
+EXECUTE_JS = """async (code) => {
+  const kernel = window.jupyterapp.shell.currentWidget.sessionContext.session.kernel;
+  const future = kernel.requestExecute({code, silent: false, store_history: false});
+  let out = '';
+  future.onIOPub = (msg) => {
+    const t = msg.header.msg_type;
+    if (t === 'stream') out += msg.content.text;
+    else if (t === 'execute_result') out += msg.content.data['text/plain'];
+    else if (t === 'error') out += 'KERNEL ERROR ' + msg.content.ename + ': ' + msg.content.evalue;
+  };
+  await future.done;
+  return out;
+}"""
+
+# 'error: ...' as soon as a cell has an error output; true when every code cell has run and
+# the kernel is idle.
+RUN_STATE_JS = """() => {
+  const w = window.jupyterapp && window.jupyterapp.shell.currentWidget;
+  if (!w || !w.content || !w.content.model || !w.sessionContext.session) return false;
+  const cells = w.content.model.toJSON().cells.filter(c => c.cell_type === 'code');
+  for (const [i, c] of cells.entries()) {
+    for (const o of (c.outputs || [])) {
+      if (o.output_type === 'error') return `error in code cell ${i}: ${o.ename}: ${o.evalue}`;
+    }
+  }
+  const kernel = w.sessionContext.session.kernel;
+  return cells.every(c => c.execution_count !== null) && kernel && kernel.status === 'idle';
+}"""
+
+
+def kernel(page, code: str) -> str:
+    out = page.evaluate(EXECUTE_JS, code)
+    assert "KERNEL ERROR" not in out, out
+    return out
 
 
 # ----------------------------------------------------------------------------- browser
-def find_chromium() -> str | None:
-    """Path of a Chromium executable: ``$COURSE_CHROMIUM`` when set (and then only that),
-    else /usr/bin/chromium (Debian) or ``chromium``/``chromium-browser`` on PATH."""
-    override = os.environ.get(CHROMIUM_ENV)
-    cands = (override,) if override else (
-        "/usr/bin/chromium", shutil.which("chromium"), shutil.which("chromium-browser"))
-    for cand in cands:
-        if cand and os.path.isfile(cand) and os.access(cand, os.X_OK):
-            return cand
-    return None
-
-
 class PageLog:
     """Console errors, uncaught page errors, HTTP errors and aborted outside requests of a page."""
 

@@ -29,7 +29,7 @@ import time
 from pathlib import Path
 
 import pytest
-from browser_harness import make_server, new_page
+from browser_harness import RUN_STATE_JS, kernel, make_server, new_page
 
 HERE = Path(__file__).resolve().parent
 NOTEBOOK = HERE / "fixtures" / "all_demos.ipynb"
@@ -78,19 +78,6 @@ LAST_DRAW_JS = """(sel) => {
   return 0;
 }"""
 
-EXECUTE_JS = """async (code) => {
-  const kernel = window.jupyterapp.shell.currentWidget.sessionContext.session.kernel;
-  const future = kernel.requestExecute({code, silent: false, store_history: false});
-  let out = '';
-  future.onIOPub = (msg) => {
-    const t = msg.header.msg_type;
-    if (t === 'stream') out += msg.content.text;
-    else if (t === 'error') out += 'KERNEL ERROR ' + msg.content.ename + ': ' + msg.content.evalue;
-  };
-  await future.done;
-  return out;
-}"""
-
 GEO = r'''
 def _cl_geo(name):
     import json
@@ -102,24 +89,6 @@ def _cl_geo(name):
     b = ax.get_window_extent()
     return json.dumps({"points": pts, "axes": [b.x0 / r, (H - b.y1) / r, b.x1 / r, (H - b.y0) / r]})
 '''
-
-RUN_STATE_JS = """() => {
-  const w = window.jupyterapp && window.jupyterapp.shell.currentWidget;
-  if (!w || !w.content || !w.content.model || !w.sessionContext.session) return false;
-  const cells = w.content.model.toJSON().cells.filter(c => c.cell_type === 'code');
-  for (const [i, c] of cells.entries())
-    for (const o of (c.outputs || []))
-      if (o.output_type === 'error') return `error in code cell ${i}: ${o.ename}: ${o.evalue}`;
-  const kernel = w.sessionContext.session.kernel;
-  return cells.every(c => c.execution_count !== null) && kernel && kernel.status === 'idle';
-}"""
-
-
-def kernel(page, code: str) -> str:
-    out = page.evaluate(EXECUTE_JS, code)
-    assert "KERNEL ERROR" not in out, out
-    return out
-
 
 KERNEL_IDLE_JS = """() => window.jupyterapp.shell.currentWidget.sessionContext.session.kernel
   .status === 'idle'"""

@@ -30,7 +30,7 @@ import time
 from pathlib import Path
 
 import pytest
-from browser_harness import ARTIFACTS, make_server, new_page
+from browser_harness import ARTIFACTS, RUN_STATE_JS, kernel, make_server, new_page
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -191,42 +191,6 @@ def _cl_browser_probe(tag=False):
         "joint": joint,
     })
 '''
-
-EXECUTE_JS = """async (code) => {
-  const kernel = window.jupyterapp.shell.currentWidget.sessionContext.session.kernel;
-  const future = kernel.requestExecute({code, silent: false, store_history: false});
-  let out = '';
-  future.onIOPub = (msg) => {
-    const t = msg.header.msg_type;
-    if (t === 'stream') out += msg.content.text;
-    else if (t === 'execute_result') out += msg.content.data['text/plain'];
-    else if (t === 'error') out += 'KERNEL ERROR ' + msg.content.ename + ': ' + msg.content.evalue;
-  };
-  await future.done;
-  return out;
-}"""
-
-# 'error: ...' as soon as a cell has an error output; true when every code cell has run and
-# the kernel is idle.
-RUN_STATE_JS = """() => {
-  const w = window.jupyterapp && window.jupyterapp.shell.currentWidget;
-  if (!w || !w.content || !w.content.model || !w.sessionContext.session) return false;
-  const cells = w.content.model.toJSON().cells.filter(c => c.cell_type === 'code');
-  for (const [i, c] of cells.entries()) {
-    for (const o of (c.outputs || [])) {
-      if (o.output_type === 'error') return `error in code cell ${i}: ${o.ename}: ${o.evalue}`;
-    }
-  }
-  const kernel = w.sessionContext.session.kernel;
-  return cells.every(c => c.execution_count !== null) && kernel && kernel.status === 'idle';
-}"""
-
-
-def kernel(page, code: str) -> str:
-    out = page.evaluate(EXECUTE_JS, code)
-    assert "KERNEL ERROR" not in out, out
-    return out
-
 
 def probe(page, tag: bool = False) -> dict:
     kernel(page, PROBE)
