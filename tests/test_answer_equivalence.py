@@ -15,7 +15,6 @@ notes.
 from __future__ import annotations
 
 import functools
-import importlib.util
 import math
 import sys
 from pathlib import Path
@@ -32,19 +31,11 @@ from course_lib.checks import HOMEWORKS, check, questions, registry
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tools"))
+from _homework_support import load  # noqa: E402
 from grading.protocol import LocalStudent, run_question  # noqa: E402
 
-
-def _load(name: str, path: Path):
-    spec = importlib.util.spec_from_file_location(name, path)
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[name] = module
-    spec.loader.exec_module(module)
-    return module
-
-
-HIDDEN = {hw: _load(f"hidden_{hw}", ROOT / "solutions" / "hidden_tests" / f"{hw}.py") for hw in HOMEWORKS}
-build = _load("build_homework_eq", ROOT / "tools" / "build_homework.py")
+HIDDEN = {hw: load(f"hidden_{hw}", ROOT / "solutions" / "hidden_tests" / f"{hw}.py") for hw in HOMEWORKS}
+build = load("build_homework_eq", ROOT / "tools" / "build_homework.py")
 
 B1, B2, B3, B4 = sp.symbols("beta1:5")
 BP1, BP2, BP3 = sp.symbols("beta1:4", positive=True)

@@ -16,29 +16,22 @@
 
 from __future__ import annotations
 
-import importlib.util
 import inspect
 import json
 import re
-import sys
 from pathlib import Path
 
 import pytest
+from _homework_support import load
 
 from course_lib.checks import HOMEWORKS, questions, registry
 
 ROOT = Path(__file__).resolve().parents[1]
 
 
-def _load(name: str, path: Path):
-    spec = importlib.util.spec_from_file_location(name, path)
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[name] = module
-    spec.loader.exec_module(module)
-    return module
 
 
-build = _load("build_homework", ROOT / "tools" / "build_homework.py")
+build = load("build_homework", ROOT / "tools" / "build_homework.py")
 SOURCES = build.sources()
 HIDDEN = sorted((ROOT / "solutions" / "hidden_tests").glob("hw*.py"))
 
@@ -139,7 +132,7 @@ def test_hidden_tests_are_independent_of_course_lib(hidden):
     assert from_course_lib == ["from course_lib import answers"], from_course_lib
     for forbidden in ("sympify", "parse_expr", "eval(", "exec(", "import sympy", "lambdify"):
         assert forbidden not in text, f"{hidden.name} must not use {forbidden}: student text is data"
-    module = _load(f"hidden_{hidden.stem}", hidden)
+    module = load(f"hidden_{hidden.stem}", hidden)
     qs = [q.split(".")[1] for q in questions(hidden.stem)]
     assert list(module.POINTS) == qs, "hidden tests and feedback checks must cover the same questions"
     for q in qs:

@@ -23,7 +23,7 @@ import sympy as sp
 
 matplotlib.use("Agg")
 
-from _variant_support import VariantHomework
+from _homework_support import VariantHomework
 
 from course_lib import variants
 from course_lib.checks import check, questions, registry

@@ -12,7 +12,7 @@ import pytest
 
 matplotlib.use("Agg")
 
-from _variant_support import VariantHomework, differ
+from _homework_support import VariantHomework, differ
 
 from course_lib import variants
 

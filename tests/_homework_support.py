@@ -1,4 +1,4 @@
-"""What the tests of per-student variants share (``tests/test_variants_*.py``).
+"""What tests of homework share: loading tools and hidden tests by path, and per-student variants.
 
 A :class:`VariantHomework` holds one homework's hidden tests, 1,000 student codes made with a
 test secret, its grading through :class:`LocalStudent` on a variant's data, and the solution
