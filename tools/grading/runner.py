@@ -197,7 +197,6 @@ class _Kernel:
         self.deadline = deadline
         self.client = None
         self.cgroup = None
-        self.executed = 0
 
     def remaining(self) -> float:
         return self.deadline - time.monotonic()
@@ -269,7 +268,6 @@ class _Kernel:
                 f"it printed more than {self.opts.limits.output_bytes} bytes of output; "
                 "the kernel was stopped"
             )
-        self.executed += 1
         return cell.get("outputs", [])
 
     def stop(self) -> None:
@@ -302,7 +300,6 @@ class _Session:
         self.errors: dict[int, str] = {}
         self.broken = ""  # why no kernel can be had any more
         self.attempts = 0
-        self.requests = 0
 
     def ensure(self) -> _Kernel | None:
         """A kernel that has run every (non-skipped) student cell, or None."""
@@ -360,7 +357,6 @@ class _Session:
             if clock["deadline"] is None:
                 clock["deadline"] = time.monotonic() + question_timeout
             question_deadline = clock["deadline"]
-            self.requests += 1
             # an unguessable name: code the student left running cannot plant a response
             response = self.job / f".response-{secrets.token_hex(12)}.json"
             source = (
