@@ -109,15 +109,15 @@ def canvas(course, tmp_path_factory):
 def test_canvas_import_layout_with_late_penalty(canvas):
     rows = list(csv.reader(open(canvas / "scores.csv", encoding="utf-8")))
     assert rows[0] == ["Student", "ID", "SIS User ID", "SIS Login ID", "Section", "hw01"]
-    assert rows[1][0].strip() == "Points Possible" and rows[1][5] == "13"
+    assert rows[1][0].strip() == "Points Possible" and rows[1][5] == "11"
     by_id = {r[1]: r for r in rows[2:]}
-    # 13 points, one started day late at 10 % per day -> 11.7
-    assert by_id["1001"][0] == "Lovelace, Ada" and float(by_id["1001"][5]) == pytest.approx(11.7)
+    # 11 points, one started day late at 10 % per day -> 9.9
+    assert by_id["1001"][0] == "Lovelace, Ada" and float(by_id["1001"][5]) == pytest.approx(9.9)
     assert float(by_id["1002"][5]) == 0
     assert any(r[0] == "stranger" and r[1] == "" for r in rows[2:])
     feedback = (canvas / "feedback" / "s001.md").read_text(encoding="utf-8")
     assert "10% of the points off per started day late" in feedback
-    assert "Late by 1 started day(s): 10% off (13 → 11.7)" in feedback
+    assert "Late by 1 started day(s): 10% off (11 → 9.9)" in feedback
     summary = (canvas / "summary.md").read_text(encoding="utf-8")
     assert "not in the roster (1): stranger" in summary
     assert "without a submission (1): 1003" in summary
@@ -151,15 +151,15 @@ def _layout(canvas, roster_path, fmt: str) -> list[dict]:
 def test_plain_layout_keeps_the_maximum_out_of_the_rows(course, canvas):
     rows = _layout(canvas, course["roster"], "plain")
     assert [r["student"] for r in rows] == ["s001", "s002", "stranger"]
-    assert rows[0]["id"] == "1001" and float(rows[0]["raw_total"]) == 13
+    assert rows[0]["id"] == "1001" and float(rows[0]["raw_total"]) == 11
     assert float(rows[0]["late_penalty"]) == pytest.approx(0.1)
-    assert float(rows[0]["total"]) == pytest.approx(11.7)
+    assert float(rows[0]["total"]) == pytest.approx(9.9)
 
 
 def test_moodle_layout(course, canvas):
     rows = _layout(canvas, course["roster"], "moodle")
     ada = next(r for r in rows if r["ID number"] == "1001")
-    assert ada["Email address"] == "ada@example.org" and float(ada["hw01"]) == pytest.approx(11.7)
+    assert ada["Email address"] == "ada@example.org" and float(ada["hw01"]) == pytest.approx(9.9)
 
 
 def test_dask_executor_gives_the_same_scores(course, canvas, tmp_path):
@@ -189,13 +189,16 @@ def test_summary_flags_a_question_whose_variants_differ_in_difficulty():
     results, labels = [], {}
     for i in range(20):
         easy = i % 2 == 0  # q3's right option is (a) for half the class, (b) for the others
-        points = dict(tests.points)
+        fractions = dict.fromkeys(tests.points, 1.0)
         if not easy and i % 10 != 1:
-            points["q3"] = 0.0  # 2 of 10 (s01, s11) get the hard kind right, all the easy kind
+            fractions["q3"] = 0.0  # 2 of 10 (s01, s11) get the hard kind right, all the easy kind
         if i % 3 == 0:
-            points["q1"] = 0.0  # q1 equally hard for every kind
+            fractions["q1"] = 0.0  # q1 equally hard for every kind
+        points = {q: f * tests.points[q] for q, f in fractions.items()}
         student = f"s{i:02d}"
-        results.append(grade.Result(student, points, dict.fromkeys(points, ""), variant="X"))
+        results.append(
+            grade.Result(student, points, dict.fromkeys(points, ""), variant="X", fractions=fractions)
+        )
         labels[student] = {"q1": "t > 0" if i < 10 else "t < 0",
                            "q3": "right option (a)" if easy else "right option (b)"}
     text, data = reports.summary(results, tests, None, labels)

@@ -41,27 +41,27 @@ def _hashes(paths) -> dict[Path, str]:
     return {p: hashlib.sha256(p.read_bytes()).hexdigest() for p in paths}
 
 
-# name -> (total of 13, per-question note fragments, run-note fragments, status)
+# name -> (total of 11 (q3 and q6 are multiple choice: feedback only), per-question note fragments, run-note fragments, status)
 EXPECTED = {
-    "correct": (13, {}, [], "ok"),
-    "fails_q1_q4": (9, {"q1": "T(1) is wrong", "q4": "κ(1) is wrong"}, [], "ok"),
-    "raises": (10, {"q2": "ValueError: boom"}, ["code cell 1 raised ZeroDivisionError"], "ok"),
+    "correct": (11, {}, [], "ok"),
+    "fails_q1_q4": (7, {"q1": "T(1) is wrong", "q4": "κ(1) is wrong"}, [], "ok"),
+    "raises": (8, {"q2": "ValueError: boom"}, ["code cell 1 raised ZeroDivisionError"], "ok"),
     "endless_loop": (
-        10,
+        8,
         {"q2": "did not finish within 2 s"},
         ["code cell 3 was skipped: it ran longer than 5 s"],
         "partly skipped",
     ),
-    "kernel_dies": (13, {}, ["code cell 2 was skipped: the kernel died"], "partly skipped"),
+    "kernel_dies": (11, {}, ["code cell 2 was skipped: the kernel died"], "partly skipped"),
     "malformed": (0, {"q1": "not a valid notebook"}, ["not a valid notebook"], "invalid notebook"),
     "deleted_variables": (
-        8,
+        6,
         {"q1": "`answer_q1` is not defined", "q2": "`chain_rule_derivatives` is not defined"},
         [],
         "ok",
     ),
     "wrong_types": (
-        3,
+        2,
         {"q1": "is None", "q2": "shape", "q3": "as a string", "q5": "is a string", "q7": "NaN"},
         [],
         "ok",
@@ -113,14 +113,14 @@ def test_each_faulty_submission_gets_its_points_and_notes(fixture_run, name):
     assert float(row["total"]) == total
     assert row["status"] == status
     feedback = (fixture_run["out"] / "feedback" / f"{name}.md").read_text(encoding="utf-8")
-    assert f"**Score: {total:g} / 13**" in feedback
+    assert f"**Score: {total:g} / 11**" in feedback
     for q, fragment in notes.items():
         line = next(x for x in feedback.splitlines() if x.startswith(f"| {q} |"))
         assert fragment in line, f"{name} {q}: {line}"
         assert float(row[q]) == 0
     for fragment in run_notes:
         assert fragment in feedback, f"{name}: no run note {fragment!r}"
-    if total == 13:
+    if total == 11:
         assert all(
             float(row[q]) == grade.HiddenTests.load(HIDDEN / "hw01.py").points[q] for q in notes
         )
@@ -134,8 +134,8 @@ def test_score_table_layout(fixture_run):
                        "late_penalty", "total", "status", "sandbox"]  # fmt: skip
     assert sorted(r[0] for r in rows[1:]) == sorted(EXPECTED)
     results = json.loads((fixture_run["out"] / "results.json").read_text(encoding="utf-8"))
-    assert sum(results["points"].values()) == 13
-    assert "maximum 13 points" in (fixture_run["out"] / "summary.md").read_text(encoding="utf-8")
+    assert sum(results["points"].values()) == 11
+    assert "maximum 11 points" in (fixture_run["out"] / "summary.md").read_text(encoding="utf-8")
     assert (fixture_run["out"] / "histogram.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 

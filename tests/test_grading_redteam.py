@@ -1,6 +1,8 @@
 """Grades that cannot be forged: hostile submissions graded beside correct ones (issue 12).
 
-One batch: two copies of the hw01 solution, every cheat of ``tests/fixtures/redteam/cheats.py``
+One batch, graded as a course with per-student variants grades it (a course secret, so every
+student is graded on their own data; issue 19): two copies of the hw01 solution, each done with
+its student's own variant code, every cheat of ``tests/fixtures/redteam/cheats.py``
 (one per class of attack: monkeypatching, lying objects, reading the tests, forged results,
 reaching outside the kernel, resources) and submissions with colliding names.  Then:
 
@@ -21,7 +23,6 @@ import csv
 import hashlib
 import importlib.util
 import os
-import shutil
 import sys
 import tempfile
 from pathlib import Path
@@ -49,6 +50,20 @@ pytestmark = [
 ]
 
 
+SECRET = b"the red team's course secret, 32b"
+
+
+def _solution_for(student: str) -> nbformat.NotebookNode:
+    """The solution notebook as ``student`` hands it in: done with their own variant code."""
+    from course_lib import variants
+
+    nb = nbformat.read(SOLUTION, as_version=4)
+    code = variants.code_for(SECRET, "hw01", student)
+    first = next(c for c in nb.cells if c.cell_type == "code" and 'VARIANT = ""' in c.source)
+    first.source = first.source.replace('VARIANT = ""', f"VARIANT = {code!r}", 1)
+    return nb
+
+
 def _marker_processes() -> list[str]:
     found = []
     for pid in os.listdir("/proc"):
@@ -74,8 +89,8 @@ def _pwned_files(roots: list[Path]) -> list[Path]:
 @pytest.fixture(scope="module")
 def batch(tmp_path_factory):
     subs = tmp_path_factory.mktemp("submissions")
-    shutil.copyfile(SOLUTION, subs / "correct_1.ipynb")
-    shutil.copyfile(SOLUTION, subs / "correct_2.ipynb")
+    nbformat.write(_solution_for("correct_1"), subs / "correct_1.ipynb")
+    nbformat.write(_solution_for("correct_2"), subs / "correct_2.ipynb")
     for name, (_, cells) in cheats.CHEATS.items():
         nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c.strip()) for c in cells])
         nbformat.write(nb, subs / f"cheat_{name}.ipynb")
@@ -86,17 +101,19 @@ def batch(tmp_path_factory):
     nbformat.write(blank, subs / "a__b.ipynb")
     (subs / "carol").mkdir()
     nbformat.write(blank, subs / "carol" / "first.ipynb")
-    shutil.copyfile(SOLUTION, subs / "carol" / "second.ipynb")
+    nbformat.write(_solution_for("carol"), subs / "carol" / "second.ipynb")
     os.utime(subs / "carol" / "first.ipynb", (1_000_000_000, 1_000_000_000))
 
     groups_before = _cgroups()
     files = sorted(p for p in subs.rglob("*") if p.is_file())
     before = {p: hashlib.sha256(p.read_bytes()).hexdigest() for p in files}
     out = tmp_path_factory.mktemp("grades")
+    secret = tmp_path_factory.mktemp("secret") / "course_secret.txt"
+    secret.write_bytes(SECRET)
     code = grade.main(
         ["--tests", str(HIDDEN), "--submissions", str(subs), "--out", str(out),
          "--cell-timeout", "15", "--question-timeout", "8", "--time-limit", "90",
-         "--jobs", "2", "--sandbox", "bwrap"]
+         "--jobs", "2", "--sandbox", "bwrap", "--secret-file", str(secret)]
     )  # fmt: skip
     import time
 
@@ -128,7 +145,10 @@ def test_correct_submissions_keep_full_marks_and_identical_feedback(batch):
     for name in ("correct_1", "correct_2"):
         assert float(batch["rows"][name]["total"]) == tests.max_points, batch["rows"][name]
         text = (batch["out"] / "feedback" / f"{name}.md").read_text(encoding="utf-8")
-        full = grade.Result(name, dict(tests.points), dict.fromkeys(tests.points, ""))
+        full = grade.Result(name, dict(tests.points), dict.fromkeys(tests.points, ""),
+                            fractions=dict.fromkeys(tests.points, 1.0))
+        code = grade.variants.code_for(SECRET, "hw01", name)
+        full.run_notes.append(f"graded on the student's own data (variant {code})")
         assert text == grade.feedback_markdown(full, tests)
 
 
@@ -156,7 +176,7 @@ def test_names_are_unique_and_duplicates_flagged(batch):
     assert "several notebooks" in carol["status"]
     text = (batch["out"] / "feedback" / "carol.md").read_text(encoding="utf-8")
     assert "carol/second.ipynb (the newest)" in text and "carol/first.ipynb" in text
-    assert float(carol["total"]) == 13
+    assert float(carol["total"]) == 11
 
 
 def test_feedback_names_are_distinct_even_ignoring_case():

@@ -141,6 +141,17 @@ def test_hidden_tests_are_independent_of_course_lib(hidden):
         assert callable(fn) and list(inspect.signature(fn).parameters) == params, q
 
 
+@pytest.mark.parametrize("hidden", HIDDEN, ids=lambda p: p.stem)
+def test_multiple_choice_is_feedback_only(hidden):
+    """No point for what trying each letter in the check finds (the README's one-liner rule)."""
+    module = load(f"hidden_{hidden.stem}_points", hidden)
+    choice = {q for q in module.POINTS if "answers.choice(" in inspect.getsource(getattr(module, q))}
+    assert choice, f"{hidden.name}: no multiple-choice question found (is the detection stale?)"
+    paid = {q: module.POINTS[q] for q in choice if module.POINTS[q] != 0}
+    assert not paid, f"{hidden.name}: multiple choice must be worth 0 points (feedback only): {paid}"
+    assert sum(module.POINTS.values()) > 0
+
+
 def test_answers_module_knows_no_mathematics_of_the_course():
     text = (ROOT / "course_lib" / "answers.py").read_text(encoding="utf-8")
     imports = re.findall(r"^\s*(?:from|import)\s+(\S+)", text, flags=re.MULTILINE)

@@ -90,6 +90,12 @@ def test_edition_holds_what_a_student_needs(edition):
     names = {p.relative_to(edition).as_posix() for p in edition.rglob("*") if p.is_file()}
     assert {"README.md", "Makefile", "pyproject.toml", "environment.yml", "constraints.txt",
             "course_lib/__init__.py", "course_lib/submit.py", "notebooks/00_welcome.ipynb"} <= names
+    # make lab's JupyterLab set-up (no news popup, table of contents open, no dead widgets)
+    assert {".jupyter-course/jupyter_server_config.py",
+            ".jupyter-course/lab/workspaces-defaults/default-37a8.jupyterlab-workspace",
+            ".jupyter-course/lab/user-settings-defaults/@jupyterlab/apputils-extension/"
+            "notification.jupyterlab-settings"} <= names
+    assert "--config=.jupyter-course/jupyter_server_config.py" in (edition / "Makefile").read_text()
     assert {f"exercises/{p.name}" for p in (ROOT / "exercises").glob("*.ipynb")} <= names
     lectures = {f"notebooks/{p.name}" for p in (ROOT / "notebooks").glob("*.ipynb")}
     assert lectures <= names

@@ -25,9 +25,14 @@ ROOT = Path(__file__).resolve().parents[1]
 MARK = ".student-edition"
 
 # what goes in, relative to the checkout (an allow-list: nothing else is copied)
-INCLUDE_FILES = ["pyproject.toml", "constraints.txt", "environment.yml", "LICENSE"]
+INCLUDE_FILES = ["pyproject.toml", "constraints.txt", "environment.yml", "LICENSE",
+                 ".jupyter-course/jupyter_server_config.py"]
 INCLUDE_GLOBS = ["notebooks/*.ipynb", "exercises/*.ipynb", "course_lib/**/*.py",
-                 "course_lib/**/*.json"]
+                 "course_lib/**/*.json",
+                 # JupyterLab as the course sets it up: no news popup, readable fonts, the
+                 # table of contents open, widget views stripped on save (no dead widgets)
+                 ".jupyter-course/lab/user-settings-defaults/**/*.jupyterlab-settings",
+                 ".jupyter-course/lab/workspaces-defaults/*.jupyterlab-workspace"]
 
 STUDENT_README = """# Geometric continuity of parametric curves — student edition
 
@@ -81,7 +86,8 @@ $(STAMP): pyproject.toml constraints.txt
 install: $(STAMP)
 
 lab: install
-\t$(BIN)/jupyter lab --ServerApp.root_dir=$(CURDIR) $(ALLOW_ROOT) notebooks/00_welcome.ipynb
+\t$(BIN)/jupyter lab --config=.jupyter-course/jupyter_server_config.py \\
+\t    --ServerApp.root_dir=$(CURDIR) $(ALLOW_ROOT) notebooks/00_welcome.ipynb
 
 submit: install
 \t@test -n "$(STUDENT)" || (echo "usage: make submit HW=hw01 STUDENT=your-id"; exit 2)

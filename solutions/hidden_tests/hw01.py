@@ -21,7 +21,7 @@ import numpy as np
 from course_lib import answers
 
 HOMEWORK = "hw01"
-POINTS = {"q1": 2, "q2": 3, "q3": 1, "q4": 2, "q5": 2, "q6": 1, "q7": 2}
+POINTS = {"q1": 2, "q2": 3, "q3": 0, "q4": 2, "q5": 2, "q6": 0, "q7": 2}  # multiple choice: feedback only
 
 QUAD_HINT = "quad returns (value, error estimate): take the first"
 

@@ -22,7 +22,7 @@ import numpy as np
 from course_lib import answers
 
 HOMEWORK = "hw02"
-POINTS = {"q1": 1, "q2": 2, "q3": 3, "q4": 2, "q5": 2, "q6": 1, "q7": 2}
+POINTS = {"q1": 1, "q2": 2, "q3": 3, "q4": 2, "q5": 2, "q6": 0, "q7": 0}  # multiple choice: feedback only
 
 VARIANTS = True
 

@@ -21,7 +21,7 @@ import numpy as np
 from course_lib import answers
 
 HOMEWORK = "hw03"
-POINTS = {"q1": 2, "q2": 4, "q3": 3, "q4": 1, "q5": 2, "q6": 2, "q7": 2}
+POINTS = {"q1": 2, "q2": 4, "q3": 3, "q4": 0, "q5": 2, "q6": 2, "q7": 2}  # multiple choice: feedback only
 
 VARIANTS = True
 

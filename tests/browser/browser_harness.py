@@ -190,6 +190,9 @@ class Server:
         settings = self.base / "settings"
         if not settings.exists():
             shutil.copytree(ROOT / ".jupyter-course" / "lab" / "user-settings-defaults", settings)
+        workspaces = self.base / "ws"
+        if not workspaces.exists():  # the course's layout: the table of contents open
+            shutil.copytree(ROOT / ".jupyter-course" / "lab" / "workspaces-defaults", workspaces)
         cmd = [
             sys.executable, "-m", "jupyterlab", "--no-browser",
             "--ServerApp.ip=127.0.0.1", f"--ServerApp.port={self.port}",
@@ -197,7 +200,7 @@ class Server:
             "--ServerApp.port_retries=0", f"--IdentityProvider.token={self.token}",
             f"--ServerApp.root_dir={self.root}",
             f"--LabApp.user_settings_dir={settings}",
-            f"--LabApp.workspaces_dir={self.base / 'ws'}",
+            f"--LabApp.workspaces_dir={workspaces}",
             "--LabApp.news_url=None",
             "--LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate",
             "--LabApp.expose_app_in_browser=True",  # window.jupyterapp: kernel probe, model

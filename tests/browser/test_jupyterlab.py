@@ -368,8 +368,8 @@ class TestJupyterLab:
         assert (artifacts / "jupyterlab-demo-after-interaction.png").stat().st_size > 0
 
     def test_course_settings_and_no_dead_widgets_after_saving(self, lab):
-        """``make lab``'s configuration (.jupyter-course/): readable font, no news popup,
-        and a saved notebook holds no widget view that would be dead on reopening."""
+        """``make lab``'s configuration (.jupyter-course/): readable font, no news popup, the
+        table of contents open, and a saved notebook holds no widget view that would be dead on reopening."""
         from playwright.sync_api import expect
 
         page = lab.page
@@ -377,6 +377,11 @@ class TestJupyterLab:
             "() => getComputedStyle(document.body).getPropertyValue('--jp-content-font-size1')")
         assert font.strip() == "16px", font
         expect(page.locator(".jp-toast-message", has_text="news")).to_have_count(0)
+        # the course's layout opens with the table of contents in the left sidebar, listing
+        # the open notebook's headings
+        toc = page.locator("#table-of-contents")
+        expect(toc).to_be_visible()
+        expect(toc.locator(".jp-tocItem-content").first).to_be_visible()
         # a student's 1366×768 laptop: the demo fits the notebook column, nothing scrolls sideways
         page.set_viewport_size({"width": 1366, "height": 768})
         page.wait_for_timeout(500)

@@ -192,6 +192,9 @@ def feedback_markdown(r, tests, late: LatePolicy | None = None) -> str:
     ]
     for q in tests.points:
         note = r.notes[q].replace("|", "\\|").replace("\n", " ") or "✓"
+        if tests.points[q] == 0:  # multiple choice: a check can be tried letter by letter
+            wrong = "✗ " + (r.notes[q].replace("|", "\\|").replace("\n", " ") or "wrong answer")
+            note = "feedback only: " + ("✓ right" if r.right(q, 0) else wrong)
         lines.append(f"| {q} | {r.points[q]:g} | {tests.points[q]:g} | {note} |")
     if late is not None:
         when = r.submitted or "unknown"
@@ -222,7 +225,7 @@ def variant_spread(results, tests, labels: dict[str, dict[str, str]]) -> dict[st
         for r in results:
             label = labels.get(r.student, {}).get(q)
             if label is not None:
-                groups.setdefault(label, []).append(r.points[q] >= tests.points[q])
+                groups.setdefault(label, []).append(r.right(q, tests.points[q]))
         rates = {k: (sum(v) / len(v), len(v)) for k, v in sorted(groups.items())}
         big = [rate for rate, n in rates.values() if n >= MIN_PER_STRATUM]
         flagged = len(big) >= 2 and max(big) - min(big) > SPREAD_FLAG
@@ -243,7 +246,7 @@ def summary(
     totals = [final_total(r) for r in results]
     rates = {
         q: (
-            sum(1 for r in results if r.points[q] >= tests.points[q]) / len(results)
+            sum(1 for r in results if r.right(q, tests.points[q])) / len(results)
             if results
             else 0.0
         )
@@ -266,8 +269,12 @@ def summary(
     ]
     if totals:
         lines.append(f"Mean {data['mean']:g}, median {data['median']:g}.")
-    lines += ["", "| question | points | full marks |", "|---|---|---|"]
-    lines += [f"| {q} | {tests.points[q]:g} | {rates[q]:.0%} |" for q in tests.points]
+    lines += ["", "| question | points | right |", "|---|---|---|"]
+    lines += [
+        f"| {q} | {tests.points[q]:g}{' (feedback only)' if tests.points[q] == 0 else ''} "
+        f"| {rates[q]:.0%} |"
+        for q in tests.points
+    ]
     if roster is not None:
         seen = {r.lms["id"] for r in results if r.lms}
         unknown = sorted(r.student for r in results if not r.lms)

@@ -76,6 +76,12 @@ class HiddenTests:
         points = ns.get("POINTS")
         if not isinstance(points, dict) or not points:
             raise SystemExit(f"{path}: POINTS must be a non-empty dict question -> points")
+        bad = {q: v for q, v in points.items() if not isinstance(v, int | float) or not v >= 0}
+        if bad or not sum(points.values()) > 0:
+            raise SystemExit(
+                f"{path}: POINTS must be numbers >= 0 (0 = feedback only) with a positive sum; "
+                f"got {bad or points}"
+            )
         missing = [q for q in points if not callable(ns.get(q))]
         if missing:
             raise SystemExit(f"{path}: no test function for {missing}")
@@ -106,6 +112,15 @@ class Result:
     penalty: float = 0.0  # fraction of the points lost for lateness
     lms: dict | None = None  # the roster entry: id, name, email
     variant: str = ""  # the student's variant code ("" = the default data)
+    #: the fraction of each question's credit earned (0..1); a feedback-only question (0 points)
+    #: is right or wrong here although it adds nothing to the total
+    fractions: dict[str, float] = field(default_factory=dict)
+
+    def right(self, q: str, points: float) -> bool:
+        """Did the answer to ``q`` earn full credit (also for a feedback-only question)?"""
+        if q in self.fractions:
+            return self.fractions[q] >= 1.0
+        return points > 0 and self.points[q] >= points  # results written before fractions
 
     @property
     def total(self) -> float:
@@ -542,6 +557,7 @@ def grade_notebook(
                 test = functools.partial(test, data=variant_data)
             fraction, note = protocol.run_question(test, protocol.Student(transport))
             result.points[q] = round(fraction * tests.points[q], 2)
+            result.fractions[q] = fraction
             result.notes[q] = note
         for k in sorted(session.errors):
             if len(result.run_notes) < 12:
@@ -550,7 +566,7 @@ def grade_notebook(
         session.close()
         shutil.rmtree(job, ignore_errors=True)
     for q in questions:
-        if result.points[q] < tests.points[q] and not result.notes[q]:
+        if result.fractions.get(q, 0.0) < 1.0 and not result.notes[q]:
             result.notes[q] = "wrong answer"
     if mode != "bwrap":
         result.run_notes.append(UNSANDBOXED_NOTE)

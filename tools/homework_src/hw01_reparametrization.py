@@ -23,6 +23,8 @@
 # The checks are feedback, not the grade: the grade comes from other tests with other data, so
 # write code that works in general. Keep the names (`answer_q1`, `chain_rule_derivatives`, ...),
 # do not delete cells, and before you hand in run *Kernel → Restart Kernel and Run All Cells*.
+# Multiple-choice questions are for practice, worth 0 points: a letter can be found by trying
+# each one in its check.
 #
 # **Your own data.** Every student gets their own numbers: paste the *variant code* your
 # instructor gave you into `VARIANT` below. The cells marked "your data" print the data of each
@@ -92,7 +94,7 @@ def chain_rule_derivatives(q1, q2, f1, f2):
 check("hw01.q2", chain_rule_derivatives)
 
 # %% [markdown]
-# ## Question 3 — which is a change of variables? (multiple choice)
+# ## Question 3 — which is a change of variables? (multiple choice, feedback only: 0 points)
 #
 # Seed 000 §4 asks of an *orientation-preserving change of variables* $f$ from $[0, 1]$ onto
 # $[0, 1]$: it is regular and $C^n$, it maps the interval **onto** the interval, and $f' > 0$.
@@ -182,7 +184,7 @@ assert np.allclose(answer_q5, np.array(direct, dtype=float).ravel())
 check("hw01.q5", answer_q5)
 
 # %% [markdown]
-# ## Question 6 — what belongs to the curve? (multiple choice, several answers)
+# ## Question 6 — what belongs to the curve? (multiple choice, several answers; feedback only: 0 points)
 #
 # Which of these quantities are *intrinsic* — the same for every equivalent parametrization at the
 # same point of the curve (seed 000 §4)? The options are in your data, in your own order.

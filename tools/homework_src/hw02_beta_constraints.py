@@ -22,6 +22,8 @@
 # cell, then run the **check cell** below it: ✓ right, ✗ what is wrong, … not answered yet.
 # The checks are feedback; the grade comes from other tests with other data. Keep the names, do
 # not delete cells, and before you hand in run *Kernel → Restart Kernel and Run All Cells*.
+# Multiple-choice questions are for practice, worth 0 points: a letter can be found by trying
+# each one in its check.
 #
 # **Your own data.** Every student gets their own numbers: paste the *variant code* your
 # instructor gave you into `VARIANT` below. The cells marked "your data" print the data of each
@@ -161,7 +163,7 @@ answer_q5 = b1**2 * q2 + b2 * q1
 check("hw02.q5", answer_q5)
 
 # %% [markdown]
-# ## Question 6 — the special values (multiple choice)
+# ## Question 6 — the special values (multiple choice, feedback only: 0 points)
 #
 # At a joint the Beta-constraints hold with $\beta_1 = 1$ and $\beta_2 = 0$. Which one of the
 # four statements of your data (in your own order) is true? Answer with one letter.
@@ -181,7 +183,7 @@ answer_q6 = "".join(x for x, label in DATA["q6"]["options"].items() if label == 
 check("hw02.q6", answer_q6)
 
 # %% [markdown]
-# ## Question 7 — read a picture
+# ## Question 7 — read a picture (multiple choice, feedback only: 0 points)
 #
 # The curve below has four cubic segments and three joints, lettered A, B, C in the order of your
 # data. Next to it, along the parameter and with one colour per segment: the direction angle of

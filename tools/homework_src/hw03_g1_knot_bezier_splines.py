@@ -24,6 +24,8 @@
 # cell, then run the **check cell** below it: ✓ right, ✗ what is wrong, … not answered yet.
 # The checks are feedback; the grade comes from other tests with other data. Keep the names, do
 # not delete cells, and before you hand in run *Kernel → Restart Kernel and Run All Cells*.
+# Multiple-choice questions are for practice, worth 0 points: a letter can be found by trying
+# each one in its check.
 #
 # **Your own data.** Every student gets their own numbers: paste the *variant code* your
 # instructor gave you into `VARIANT` below. The cells marked "your data" print the data of each
@@ -133,7 +135,7 @@ ax.legend(fontsize=8)
 plt.show()
 
 # %% [markdown]
-# ## Question 4 — C1 in the local parameters (multiple choice)
+# ## Question 4 — C1 in the local parameters (multiple choice, feedback only: 0 points)
 #
 # For which of the knot sequences (a), (b), (c) of question 3 is the spline $C^1$ even in the
 # *local* parameters of its segments, i.e. every joint point is the midpoint of its neighbours?
