@@ -34,8 +34,8 @@ __all__ = ["BETA1", "Q6_OPTIONS", "Q6_RIGHT", "generate", "strata"]
 
 #: β1 of q1, q3, q5: away from 0, ≠ 1
 BETA1 = [Fraction(n, 4) for n in (2, 3, 5, 6, 8, 10, 12)]  # 1/2, 3/4, 5/4, 3/2, 2, 5/2, 3
-#: β2 of q3: −3 .. 3 by halves, not 0
-BETA2 = [Fraction(n, 2) for n in range(-6, 7) if n != 0]
+#: β2 of q3: −4 .. 4 by halves, not 0
+BETA2 = [Fraction(n, 2) for n in range(-8, 9) if n != 0]
 
 #: q6: the statements, as printed (default order)
 Q6_OPTIONS = [
@@ -95,7 +95,8 @@ def _params(rng: np.random.Generator | None) -> dict:
             break
     while True:
         b1, b2 = pick(BETA1), pick(BETA2)
-        if b2 + 2 * b1 * (1 + b1) > 0:  # γ > 0: T on the ray, beyond V_2
+        den = b2 + 2 * b1 * (1 + b1)
+        if den > 0 and 10 * abs(b2) >= den:  # γ > 0 (T on the ray); β2 moves γ by ≥ 10 %
             g = gamma(b1, b2)
             if Fraction(1, 4) <= g <= Fraction(5, 2) and abs(g - 1) >= Fraction(3, 20):
                 break
