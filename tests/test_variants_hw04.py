@@ -234,3 +234,25 @@ def test_gamma_of_the_generator_is_exact():
         q = variants.data("hw04", code)["q3"]
         exact = gen.gamma(Fraction(q["beta1"]), Fraction(q["beta2"]))
         assert float(exact) == pytest.approx(_gamma(q["beta1"], q["beta2"]), rel=1e-15)
+
+
+# ------------------------------------------------------------------ any seed, not only the codes
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.integers(0, 2**63 - 1))
+def test_every_seed_gives_well_posed_data(seed):
+    from course_lib.checks import _variants_hw04 as gen
+
+    d = gen.generate(np.random.default_rng(seed))
+    assert d["q1"]["V_dm1"] != d["q1"]["V_d"] and d["q5"]["W_left"] != d["q5"]["W_right"]
+    assert {d["q1"]["beta1"], d["q3"]["beta1"], d["q5"]["beta1"]} <= {0.5, 0.75, 1.25, 1.5, 2.0, 2.5, 3.0}
+    V, b1, b2 = _arr(d["q3"]["V"]), d["q3"]["beta1"], d["q3"]["beta2"]
+    assert np.all(np.diff(V[:, 0]) >= 1) and b2 != 0
+    (ax, ay), (bx, by) = V[2] - V[1], V[3] - V[2]
+    assert ax * by - ay * bx != 0
+    g = _gamma(b1, b2)
+    assert 0.25 <= g <= 2.5 and abs(g - 1) >= 0.15 and abs(g * b1 - 1) >= 0.1  # β2 moves γ by ≥ 10 %
+    assert sum("B-spline" in label for label in d["q6"]["options"].values()) == 1
