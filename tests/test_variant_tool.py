@@ -27,6 +27,7 @@ def _default_afterwards():
     yield
     variants.data("hw01", variants.DEFAULT)
     variants.data("hw02", variants.DEFAULT)
+    variants.data("hw04", variants.DEFAULT)
 
 
 @pytest.fixture
@@ -64,8 +65,8 @@ def test_codes_for_the_lms_are_the_codes_the_grader_computes(secret, tmp_path, c
     out = tmp_path / "codes.csv"
     tool.main(["codes", "hw01", "--secret-file", str(secret), "--roster", str(roster), "--out", str(out)])
     assert list(csv.DictReader(out.open(encoding="utf-8"))) == rows
-    with pytest.raises(SystemExit, match="hw04 has no variants"):
-        tool.main(["codes", "hw04", "--secret-file", str(secret), "--roster", str(roster)])
+    with pytest.raises(SystemExit, match="hw99 has no variants"):
+        tool.main(["codes", "hw99", "--secret-file", str(secret), "--roster", str(roster)])
     short = tmp_path / "short.txt"
     short.write_text("abc")
     with pytest.raises(SystemExit, match="too short"):
@@ -103,3 +104,19 @@ def test_show_works_for_hw02_too(secret, capsys):
     assert float(line.split("=", 1)[1]) == pytest.approx(d["r1"][0] / d["q1"][0])
     letter = next(x for x in text.splitlines() if "answer_q6 =" in x).split("=", 1)[1].strip().strip("'")
     assert "C²" in data["q6"]["options"][letter]
+
+
+def test_show_works_for_hw04_too(secret, capsys):
+    capsys.readouterr()
+    assert tool.main(["show", "hw04", "1001", "--secret-file", str(secret)]) == 0
+    text = capsys.readouterr().out
+    code = variants.code_for(secret.read_bytes().strip(), "hw04", "1001")
+    data = variants.data("hw04", code)
+    assert f"VARIANT = {code!r}" in text and data["q3"]["text"] in text and data["q6"]["text"].splitlines()[0] in text
+    # the worked W1 is the student's: V_d + β1 (V_d − V_{d−1}), by hand
+    d = data["q1"]
+    line = next(x for x in text.splitlines() if "answer_q1 =" in x)
+    got = np.array(ast.literal_eval(line.split("=", 1)[1].strip()))
+    assert np.allclose(got, np.add(d["V_d"], d["beta1"] * np.subtract(d["V_d"], d["V_dm1"])))
+    letter = next(x for x in text.splitlines() if "answer_q6 =" in x).split("=", 1)[1].strip().strip("'")
+    assert "B-spline" in data["q6"]["options"][letter]

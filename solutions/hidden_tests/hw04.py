@@ -5,6 +5,13 @@ normalized with ``course_lib.answers`` (the feedback checks' code).  Expected va
 by hand (derivations next to them) or checked through the defining properties -- Bézier end
 derivatives (seed 000 eq. 8) put into the Beta-constraints (eq. 7) -- never with course_lib's
 mathematics or the solution notebook's code.
+
+Per-student variants (issue 19): ``VARIANTS = True``, so the grader calls ``qN(student, data)``
+with the student's own data (``course_lib.variants.data("hw04", code)``: the default data
+without a course secret).  Every expected value is a generic formula of ``data``; the function
+questions q2 and q4 are the same for everyone.  q6 (multiple choice) is feedback only: worth 0
+points, since its letter can be found by trying each one in ``check()``; its test still reports
+right or wrong.  :func:`answers_for` gives the worked answers of a variant (``tools/variant.py show``).
 """
 
 from __future__ import annotations
@@ -14,14 +21,16 @@ import numpy as np
 from course_lib import answers
 
 HOMEWORK = "hw04"
-POINTS = {"q1": 1, "q2": 4, "q3": 2, "q4": 3, "q5": 1, "q6": 1}
+POINTS = {"q1": 1, "q2": 4, "q3": 2, "q4": 3, "q5": 1, "q6": 0}
 
-#: The question data as stated in the notebook (a per-student variant would replace it).
-DATA = {
-    "q1": {"V_dm1": np.array([1.0, 2.0]), "V_d": np.array([3.0, 3.0]), "beta1": 1.5},
-    "q3": {"V": np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 3.0], [4.0, 2.0]]), "beta1": 1.5, "beta2": 1.0},
-    "q5": {"W_left": np.array([2.0, 1.0]), "W_right": np.array([5.0, 4.0]), "beta1": 2.0},
-}
+VARIANTS = True
+
+#: q6: the true statement (seed 000 §10.2 with β1 = 1, β2 = 0: γ = 1, the interior vertices
+#: trisect the legs and the junction vertex is (V_{i-1} + 4 V_i + V_{i+1})/6, the Bézier points of
+#: the uniform cubic B-spline).  The options are shuffled per student; the letter follows the
+#: label: the one statement that names the B-spline (a short key: the labels are printed in the
+#: notebook, and hidden-test strings must not appear there).
+RIGHT_Q6 = "B-spline"
 
 #: g2_stitch cases (V, β1, β2): degrees 3, 5 and 2, all with β2 ≠ 0, so that a missing β2 term
 #: and a β2 divided by 2 instead of d − 1 both fail at least two cases.
@@ -45,14 +54,53 @@ def _end_derivatives(P, at_end):
     return d * (P[1] - P[0]), d * (d - 1) * (P[2] - 2 * P[1] + P[0])
 
 
-def q1(student):
-    d = DATA["q1"]
-    # W1 = V_d + β1 (V_d - V_{d-1}) = (3, 3) + 1.5 (2, 1) = (6, 4.5)
+def _vec(v):
+    return np.asarray(v, dtype=float)
+
+
+def _w1(d):
+    # default data: W1 = V_d + β1 (V_d - V_{d-1}) = (3, 3) + 1.5 (2, 1) = (6, 4.5)
+    Vm, Vd = _vec(d["V_dm1"]), _vec(d["V_d"])
+    return Vd + d["beta1"] * (Vd - Vm)
+
+
+def _farin_boehm_t(d):
+    # default data: d = 3, β1 = 3/2, β2 = 1: γ = 2 (5/2) / (1 + (3/2) 2 (5/2)) = 10/17,
+    # β1² γ = 45/34, T = (3, 3) + (45/34) (2, 1) = (96/17, 147/34)
+    V, b1, b2 = _vec(d["V"]), d["beta1"], d["beta2"]
+    n = len(V) - 1
+    gamma = (n - 1) * (1 + b1) / (b2 + b1 * (n - 1) * (1 + b1))  # seed 000 eq. (12.1)
+    return V[-2] + b1**2 * gamma * (V[-2] - V[-3])
+
+
+def _junction(d):
+    # default data: J = (β1 W_left + W_right) / (1 + β1) = (2 (2, 1) + (5, 4)) / 3 = (3, 2)
+    return (d["beta1"] * _vec(d["W_left"]) + _vec(d["W_right"])) / (1 + d["beta1"])
+
+
+def _right_letter_q6(d):
+    # default order: (b) names the uniform cubic B-spline
+    return "".join(x for x, label in sorted(d["options"].items()) if RIGHT_Q6 in label)
+
+
+def answers_for(data):
+    """The worked answers of a variant (for office hours: ``tools/variant.py show``)."""
+    return {
+        "answer_q1": _w1(data["q1"]).tolist(),
+        "g2_stitch": "W0 = V_d, W1 = V_d + β1 (V_d - V_{d-1}), W2 from (7.2) (any data)",
+        "answer_q3": _farin_boehm_t(data["q3"]).tolist(),
+        "quadratic_beta_spline": "[junction, V_i, junction] with junctions dividing legs 1 : β1 (any data)",
+        "answer_q5": _junction(data["q5"]).tolist(),
+        "answer_q6": _right_letter_q6(data["q6"]),
+    }
+
+
+def q1(student, data):
     W1 = answers.array(student["answer_q1"], (2,), "answer_q1", "a plane point")
-    assert answers.close(W1, d["V_d"] + d["beta1"] * (d["V_d"] - d["V_dm1"])), "W1 is wrong"
+    assert answers.close(W1, _w1(data["q1"])), "W1 is wrong"
 
 
-def q2(student):
+def q2(student, data):
     func = student.function("g2_stitch")
 
     def case(V, b1, b2):
@@ -75,17 +123,12 @@ def q2(student):
     return answers.partial_credit([case(*c) for c in Q2_CASES])
 
 
-def q3(student):
-    # d = 3, β1 = 3/2, β2 = 1: γ = 2 (5/2) / (1 + (3/2) 2 (5/2)) = 10/17, β1² γ = 45/34,
-    # T = (3, 3) + (45/34) (2, 1) = (96/17, 147/34)
-    V, b1, b2 = DATA["q3"]["V"], DATA["q3"]["beta1"], DATA["q3"]["beta2"]
-    d = len(V) - 1
-    gamma = (d - 1) * (1 + b1) / (b2 + b1 * (d - 1) * (1 + b1))  # seed 000 eq. (12.1)
+def q3(student, data):
     T = answers.array(student["answer_q3"], (2,), "answer_q3", "a plane point")
-    assert answers.close(T, V[-2] + b1**2 * gamma * (V[-2] - V[-3])), "T is wrong"
+    assert answers.close(T, _farin_boehm_t(data["q3"])), "T is wrong"
 
 
-def q4(student):
+def q4(student, data):
     func = student.function("quadratic_beta_spline")
 
     def case(V, b):
@@ -102,14 +145,12 @@ def q4(student):
     return answers.partial_credit([case(*c) for c in Q4_CASES])
 
 
-def q5(student):
-    d = DATA["q5"]
-    # J = (β1 W_left + W_right) / (1 + β1) = (2 (2, 1) + (5, 4)) / 3 = (3, 2)
+def q5(student, data):
     J = answers.array(student["answer_q5"], (2,), "answer_q5", "a plane point")
-    expected = (d["beta1"] * d["W_left"] + d["W_right"]) / (1 + d["beta1"])
-    assert answers.close(J, expected), "the junction vertex is wrong"
+    assert answers.close(J, _junction(data["q5"])), "the junction vertex is wrong"
 
 
-def q6(student):
+def q6(student, data):
+    # feedback only (0 points): right or wrong is reported, the score is 0 either way
     letters = answers.choice(student["answer_q6"], "abcd", "answer_q6", single=True)
-    assert letters == "b", "wrong choice"
+    assert letters == _right_letter_q6(data["q6"]), "wrong choice"

@@ -19,6 +19,11 @@
 # cell, then run the **check cell** below it: ✓ right, ✗ what is wrong, … not answered yet.
 # The checks are feedback; the grade comes from other tests with other data. Keep the names, do
 # not delete cells, and before you hand in run *Kernel → Restart Kernel and Run All Cells*.
+#
+# **Your own data.** Every student gets their own numbers: paste the *variant code* your
+# instructor gave you into `VARIANT` below. The cells marked "your data" print the data of each
+# question; your code should use `DATA[...]` rather than typing the numbers. With `VARIANT = ""`
+# you get the example data (fine for practice, but graded on your own data it scores nothing).
 
 # %% [markdown]
 # ## Preparations
@@ -27,19 +32,24 @@
 import matplotlib.pyplot as plt
 import numpy as np
 
-from course_lib import PiecewiseBezier
+from course_lib import PiecewiseBezier, variants
 from course_lib.checks import check, check_all
 
 HOMEWORK = "hw04"
+VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "ABCDE23456"
+DATA = variants.data(HOMEWORK, VARIANT)
 
 # %% [markdown]
 # ## Question 1 — G1 stitching (compute)
 #
-# The left curve ends with $\mathbf V_{d-1} = (1, 2)$, $\mathbf V_d = (3, 3)$. With
-# $\beta_1 = 1.5$, where must the second control point $\mathbf W_1$ of the next curve go?
+# The left curve ends with the control points $\mathbf V_{d-1}$, $\mathbf V_d$ of your data. With
+# the $\beta_1$ of your data, where must the second control point $\mathbf W_1$ of the next curve go?
 
 # %%
-V_dm1, V_d, b1 = np.array([1.0, 2.0]), np.array([3.0, 3.0]), 1.5
+print(DATA["q1"]["text"])  # your data
+
+# %%
+V_dm1, V_d, b1 = np.array(DATA["q1"]["V_dm1"]), np.array(DATA["q1"]["V_d"]), DATA["q1"]["beta1"]
 ### BEGIN SOLUTION
 answer_q1 = V_d + b1 * (V_d - V_dm1)  # seed 000 eq. (9)
 ### END SOLUTION
@@ -79,12 +89,15 @@ check("hw04.q2", g2_stitch)
 # Farin and Boehm build $\mathbf W_2$ geometrically (seed 000 eq. 12): with
 # $\gamma = \dfrac{(d-1)(1+\beta_1)}{\beta_2 + \beta_1 (d-1)(1+\beta_1)}$, the point
 # $\mathbf T = \mathbf V_{d-1} + \beta_1^2 \gamma (\mathbf V_{d-1} - \mathbf V_{d-2})$, and then
-# $\mathbf W_2 = \mathbf W_1 + (\mathbf W_1 - \mathbf T)/\gamma$. For the cubic below with
-# $\beta_1 = 1.5$, $\beta_2 = 1$, compute $\mathbf T$.
+# $\mathbf W_2 = \mathbf W_1 + (\mathbf W_1 - \mathbf T)/\gamma$. For the cubic
+# $\mathbf V_0, \dots, \mathbf V_3$ and the $\beta_1$, $\beta_2$ of your data, compute $\mathbf T$.
 
 # %%
-V_q3 = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 3.0], [4.0, 2.0]])
-b1, b2 = 1.5, 1.0
+print(DATA["q3"]["text"])  # your data
+
+# %%
+V_q3 = np.array(DATA["q3"]["V"])
+b1, b2 = DATA["q3"]["beta1"], DATA["q3"]["beta2"]
 ### BEGIN SOLUTION
 d = V_q3.shape[0] - 1
 gamma = (d - 1) * (1 + b1) / (b2 + b1 * (d - 1) * (1 + b1))
@@ -146,11 +159,15 @@ plt.show()
 #
 # In the cubic $G^2$ Beta-spline construction (seed 000 §10.2), the junction vertex
 # $\mathbf W_{i-1,3} = \mathbf W_{i,0}$ divides the segment from $\mathbf W_{i-1,2}$ to
-# $\mathbf W_{i,1}$ in the ratio $1 : \beta_{1,i}$. Compute it for
-# $\mathbf W_{i-1,2} = (2, 1)$, $\mathbf W_{i,1} = (5, 4)$, $\beta_{1,i} = 2$.
+# $\mathbf W_{i,1}$ in the ratio $1 : \beta_{1,i}$. Compute it for the
+# $\mathbf W_{i-1,2}$, $\mathbf W_{i,1}$ and $\beta_{1,i}$ of your data.
 
 # %%
-W_left, W_right, b1 = np.array([2.0, 1.0]), np.array([5.0, 4.0]), 2.0
+print(DATA["q5"]["text"])  # your data
+
+# %%
+W_left, W_right = np.array(DATA["q5"]["W_left"]), np.array(DATA["q5"]["W_right"])
+b1 = DATA["q5"]["beta1"]
 ### BEGIN SOLUTION
 answer_q5 = (b1 * W_left + W_right) / (1 + b1)
 # G1 at the junction: 3 (W_right - J) = beta1 * 3 (J - W_left)
@@ -162,16 +179,20 @@ assert np.allclose(W_right - answer_q5, b1 * (answer_q5 - W_left))
 check("hw04.q5", answer_q5)
 
 # %% [markdown]
-# ## Question 6 — the special values (multiple choice)
+# ## Question 6 — the special values (multiple choice, feedback only: 0 points)
 #
-# With $\beta_1 = 1$ and $\beta_2 = 0$ at every joint, the cubic $G^2$ Beta-spline is
-#
-# (a) a Catmull–Rom spline through the $\mathbf V_i$  (b) the uniform cubic B-spline of the same
-# control polygon  (c) a $G^2$ curve that is not $C^2$  (d) the control polygon itself
+# With $\beta_1 = 1$ and $\beta_2 = 0$ at every joint, what is the cubic $G^2$ Beta-spline? Which
+# one of the four statements of your data (in your own order) is true? Answer with one letter.
+# The check tells you whether you are right; this question earns no points.
+
+# %%
+print(DATA["q6"]["text"])  # your data
 
 # %%
 ### BEGIN SOLUTION
-answer_q6 = "b"
+# β1 = 1, β2 = 0: γ = 1, and the junction vertices are the B-spline's (see below)
+right = "the uniform cubic B-spline of the same control polygon"
+answer_q6 = "".join(x for x, label in DATA["q6"]["options"].items() if label == right)
 ### END SOLUTION
 ### STUDENT answer_q6 = ...
 
