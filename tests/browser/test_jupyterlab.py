@@ -258,7 +258,8 @@ def lab(request, chromium_path, voila_server, tmp_path_factory):
         timings["session created"] = time.monotonic() - t
         context, page, log = new_page(browser)
         t = time.monotonic()
-        page.goto(f"{server.url}/lab/tree/{NOTEBOOK.name}?reset&token={server.token}")
+        # no ?reset: the course's default layout (make lab's), table of contents open
+        page.goto(f"{server.url}/lab/tree/{NOTEBOOK.name}?token={server.token}")
         # the status bar, not the execution indicator, tells when the kernel is really up
         expect(page.locator("#jp-main-statusbar")).to_contain_text(
             "| Idle", timeout=KERNEL_TIMEOUT_MS

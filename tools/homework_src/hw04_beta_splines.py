@@ -19,6 +19,8 @@
 # cell, then run the **check cell** below it: ✓ right, ✗ what is wrong, … not answered yet.
 # The checks are feedback; the grade comes from other tests with other data. Keep the names, do
 # not delete cells, and before you hand in run *Kernel → Restart Kernel and Run All Cells*.
+# Multiple-choice questions are for practice, worth 0 points: a letter can be found by trying
+# each one in its check.
 #
 # **Your own data.** Every student gets their own numbers: paste the *variant code* your
 # instructor gave you into `VARIANT` below. The cells marked "your data" print the data of each
