@@ -22,7 +22,7 @@ HOMEWORKS = {
     "hw01": (("q1", "q3", "q4", "q5", "q6", "q7"), 4),  # q1, q4, q5, q7 rarely equal
     "hw02": (("q1", "q2", "q5", "q6", "q7"), 3),  # q1, q2, q5 rarely equal
     "hw03": (("q1", "q3", "q4", "q5"), 3),  # q1, q3, q5 rarely equal
-    "hw04": (("q1", "q3", "q5", "q6"), 3),  # q1, q3, q5 rarely equal; q6 is worth 0 points
+    "hw04": (("q1", "q3", "q5", "q6"), 3),  # q1, q3, q5 rarely equal
 }
 HW = {hw: VariantHomework(hw) for hw in HOMEWORKS}
 SOLVED = 50
@@ -63,8 +63,6 @@ def test_a_solution_done_with_another_code_loses_the_points_of_every_answer_that
         ns = home.solution_namespace(a)
         total = 0.0
         for q, points in home.hidden.POINTS.items():
-            if points == 0:  # feedback only: nothing to lose
-                continue
             fraction, _ = home.grade(q, ns, db)
             if q in data_questions and differ(wa[f"answer_{q}"], wb[f"answer_{q}"]):
                 assert fraction < 1.0, (a, b, q)
@@ -72,5 +70,6 @@ def test_a_solution_done_with_another_code_loses_the_points_of_every_answer_that
             elif q not in data_questions:
                 assert fraction == 1.0, (a, b, q)  # the same for everyone
             total += fraction * points
+        # marked wrong also where no point is at stake (multiple choice); points lost elsewhere
         assert total < sum(home.hidden.POINTS.values()), (a, b)
     assert lost >= per_pair * len(pairs)
