@@ -13,6 +13,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from course_lib.checks import answer_hash
 
@@ -214,3 +216,38 @@ def test_every_code_exercise_of_the_lectures_is_covered():
     for qid in found:
         per_lecture[qid[7:9]] = per_lecture.get(qid[7:9], 0) + 1
     assert all(per_lecture.get(f"{n:02d}", 0) >= 2 for n in range(1, 7)), per_lecture
+
+
+_ANY_ANSWER = st.one_of(
+    st.none(),
+    st.booleans(),
+    st.text(max_size=8),
+    st.floats(allow_nan=True, allow_infinity=True),
+    st.lists(st.floats(allow_nan=True, allow_infinity=True), max_size=4),
+    st.lists(st.lists(st.integers(-5, 5), max_size=3), max_size=3),
+    st.dictionaries(st.text(max_size=2), st.integers(), max_size=2),
+)
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.sampled_from(sorted(VECTORS)), _ANY_ANSWER)
+def test_check_vector_never_raises_and_never_passes_garbage(qid, answer):
+    from course_lib.checks.lectures import check_vector
+
+    verdict = check_vector(qid, answer)  # must not raise, whatever the answer
+    assert isinstance(verdict.message, str) and verdict.message
+    if verdict.passed:  # only the right vector (two finite numbers) may pass
+        assert np.allclose(np.asarray(answer, dtype=float).ravel(), _right(VECTORS[qid]))
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    st.sampled_from(sorted(VECTORS)),
+    st.floats(-20, 20, allow_nan=False),
+    st.floats(-20, 20, allow_nan=False),
+)
+def test_check_vector_passes_exactly_the_expected_vector(qid, x, y):
+    from course_lib.checks.lectures import check_vector
+
+    right = _right(VECTORS[qid])
+    assert check_vector(qid, [x, y]).passed == bool(np.allclose([x, y], right, rtol=0, atol=1e-8))
