@@ -207,8 +207,8 @@ def check_vector(question_id: str, answer: object, rtol: float = 1e-9) -> Verdic
         return _unknown(question_id, vector=True)
 
     def validate(a):
+        value = as_vector(a, (2,), "your answer", "a plane vector [x, y]")
         expected = LECTURE_VECTORS[question_id]()
-        value = as_vector(a, expected.shape, "your answer", "a plane vector [x, y]")
         tol = rtol * max(1.0, float(np.linalg.norm(expected)))
         if np.all(np.abs(value - expected) <= tol):
             return True, "correct."
