@@ -1,8 +1,11 @@
-"""The lectures' multiple-choice answers, derived here independently, match the stored hashes.
+"""The lectures' answers, derived here independently, are the ones their checks accept.
 
 A lecture stores only ``answer_hash(right, salt=qid)``; this test computes each right answer
 from first principles (or the course's definitions) and checks the hash, so a wrong hash in a
-lecture fails here instead of misleading students.
+lecture fails here instead of misleading students.  The code exercises (``check_number``,
+``check_vector``) are answered by hand or by a route other than the one
+``course_lib.checks.lectures`` takes; each must accept that answer, reject typical wrong ones
+and call a blank answer "not answered yet".
 """
 
 from __future__ import annotations
