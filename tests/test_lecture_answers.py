@@ -1,8 +1,11 @@
-"""The lectures' multiple-choice answers, derived here independently, match the stored hashes.
+"""The lectures' answers, derived here independently, are the ones their checks accept.
 
 A lecture stores only ``answer_hash(right, salt=qid)``; this test computes each right answer
 from first principles (or the course's definitions) and checks the hash, so a wrong hash in a
-lecture fails here instead of misleading students.
+lecture fails here instead of misleading students.  The code exercises (``check_number``,
+``check_vector``) are answered by hand or by a route other than the one
+``course_lib.checks.lectures`` takes; each must accept that answer, reject typical wrong ones
+and call a blank answer "not answered yet".
 """
 
 from __future__ import annotations
@@ -13,6 +16,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from course_lib.checks import answer_hash
 
@@ -80,3 +85,172 @@ def test_every_quiz_of_lectures_01_to_05_is_covered():
     # a later lecture adds its questions to ANSWERS (CONTRIBUTING.md, "Lecture notebooks")
     early = {q for q in stored_hashes() if int(q[7:9]) <= 5}
     assert early == set(ANSWERS)
+
+
+# ------------------------------------------------ code exercises: check_number, check_vector
+# Every numeric or vector question of a lecture, answered here by hand or by a route other
+# than the one course_lib.checks.lectures takes, with typical wrong answers that must fail.
+CHECKED = re.compile(r'\b(check_number|check_vector)\("(lecture\d\d\.q\d)"')
+
+
+def checked_questions() -> dict:
+    out = {}
+    for path in (ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"):
+        for cell in json.loads(path.read_text())["cells"]:
+            for kind, qid in CHECKED.findall("".join(cell["source"])):
+                out[qid] = kind
+    return out
+
+
+def _unit_tangent_of_q_after_f():
+    import sympy as sp
+
+    v = sp.Symbol("v")
+    f = (v + v**2) / 2  # onto [0, 1], f' = (1 + 2v)/2 > 0
+    Q_f = sp.Matrix([3 * f, 4 * f**2])  # Q(u) = (3u, 4u²) composed directly, no course_lib
+    vel = Q_f.diff(v).subs(v, sp.Rational(1, 2))
+    T = vel / vel.norm()
+    # by hand: u = f(1/2) = 3/8, Q'(3/8) = (3, 8·3/8) = (3, 3), f'(1/2) = 1: T = (1, 1)/√2
+    assert sp.simplify(T - sp.Matrix([1, 1]) / sp.sqrt(2)) == sp.zeros(2, 1)
+    return np.array(T, dtype=float).ravel()
+
+
+def _third_derivative_by_composition():
+    import sympy as sp
+
+    ub, x = sp.symbols("ubar x")
+    d1, d2, d3 = sp.Matrix([1, 0]), sp.Matrix([0, 1]), sp.Matrix([1, 1])
+    q = d1 * (x - 1) + d2 * (x - 1) ** 2 / 2 + d3 * (x - 1) ** 3 / 6  # q', q'', q''' at 1
+    u = 1 + 2 * (ub - 1) + (ub - 1) ** 2 / 2 + 3 * (ub - 1) ** 3 / 6  # β = (2, 1, 3)
+    exact = q.subs(x, u).diff(ub, 3).subs(ub, 1)
+    # by hand (seed 000 eq. 7.3): β1³ q''' + 3 β1 β2 q'' + β3 q' = 8(1,1) + 6(0,1) + 3(1,0)
+    assert exact == sp.Matrix([11, 14])
+    return np.array(exact, dtype=float).ravel()
+
+
+def _curvature_jump_by_hand():
+    P0, A, B, P2 = (np.array(p) for p in ([0.0, 0.0], [0.2, 0.4], [0.6, 0.4], [0.7, 0.1]))
+    M = (A + B) / 2
+    v = B - A  # both velocities at M (lecture 6, §2)
+    qpp, rpp = 2 * (P0 - 2 * A + M), 2 * (M - 2 * B + P2)  # second derivatives of quadratics
+    cross = lambda a, b: a[0] * b[1] - a[1] * b[0]  # noqa: E731
+    kq, kr = cross(v, qpp) / 0.4**3, cross(v, rpp) / 0.4**3  # |v| = 0.4: -5 and -3.75
+    assert np.isclose(kq, -5) and np.isclose(kr, -3.75)
+    assert np.isclose(kr - kq, 2 * cross(v, P2 - P0) / 0.4**3)  # 2·0.04 / 0.064
+    return 1.25
+
+
+def _g2_joints_of_eight_by_continuity_report():
+    from course_lib.continuity import curve_continuity, joint_continuity
+    from course_lib.outlines import glyph_outline
+
+    g2 = 0
+    for contour in glyph_outline("8").contours:  # closed: the closing joint counts too
+        c = contour.curve
+        reports = list(curve_continuity(c, max_order=2))
+        reports.append(joint_continuity(c.segment_curve(c.n_segments - 1), c.segment_curve(0),
+                                        max_order=2))
+        g2 += sum(r.g_order >= 2 for r in reports)
+    assert g2 == 4
+    return g2
+
+
+NUMBERS = {  # qid: (right answer, typical wrong answers)
+    "lecture01.q3": (np.hypot(4, 2), [np.hypot(2, 1)]),  # q~'(v) = 2 q'(2v) = (4, 2)
+    "lecture02.q3": (3.0, [0.0, 2.0]),  # (3, 4) = 2² (0, 1) + β2 (1, 0)
+    "lecture03.q2": (2.0, [0.5]),  # knot intervals 1 and 2: β1 = 2 / 1
+    "lecture03.q4": (0.5, [2.0, -0.5]),  # 1 / radius, counterclockwise: left turn
+    "lecture04.q2": (1.0, [0.5]),
+    "lecture04.q3": (4.0, [5.0]),  # W1 = V3 + 0.5 (V3 - V2) = (3, 2) + 0.5 (2, 0)
+    "lecture05.q2": (10, [4, 6]),  # n (n + 3) for n = 2
+    "lecture05.q3": (-0.125, [0.125, -0.5]),  # -β2 / β1³ = -1 / 8
+    "lecture06.q4": (_curvature_jump_by_hand, [0.625, 0.08, -1.25]),  # no 2, numerator, sign
+    "lecture06.q5": (_g2_joints_of_eight_by_continuity_report, [30, 26, 3]),
+}
+VECTORS = {
+    # wrong: the velocity of Q∘f (not normalized); T of Q at u = v instead of u = f(v)
+    "lecture01.q4": (_unit_tangent_of_q_after_f, [[3, 3], [0.6, 0.8]]),
+    # wrong: without the 3 of 3 β1 β2 q''; with seed 001's misprint β2 q' for β3 q'
+    "lecture02.q4": (_third_derivative_by_composition, [[11, 10], [9, 14]]),
+}
+
+
+def _right(spec):
+    value = spec[0]
+    return value() if callable(value) else value
+
+
+@pytest.mark.parametrize("qid", sorted(NUMBERS))
+def test_numeric_exercise_accepts_the_right_answer_only(qid):
+    from course_lib.checks.lectures import check_number
+
+    right, wrong = _right(NUMBERS[qid]), NUMBERS[qid][1]
+    assert check_number(qid, right).passed
+    for w in wrong:
+        verdict = check_number(qid, w)
+        assert not verdict.passed and verdict.answered, (qid, w)
+        assert f"{right:g}" not in verdict.message
+    blank = check_number(qid, ...)
+    assert blank.status == "not answered" and "not answered yet" in blank.message
+
+
+@pytest.mark.parametrize("qid", sorted(VECTORS))
+def test_vector_exercise_accepts_the_right_answer_only(qid):
+    from course_lib.checks.lectures import check_vector
+
+    right, wrong = _right(VECTORS[qid]), VECTORS[qid][1]
+    for form in (right, list(right), tuple(right), right.reshape(2, 1)):
+        assert check_vector(qid, form).passed, form
+    for w in wrong:
+        verdict = check_vector(qid, w)
+        assert not verdict.passed and verdict.answered, (qid, w)
+        assert not any(f"{c:g}" in verdict.message for c in right if c not in w)
+        assert "component" in verdict.message or "length" in verdict.message
+    blank = check_vector(qid, ...)
+    assert blank.status == "not answered" and "not answered yet" in blank.message
+    assert not check_vector(qid, [1.0, 2.0, 3.0]).passed  # a plane vector has two entries
+
+
+def test_every_code_exercise_of_the_lectures_is_covered():
+    found = checked_questions()
+    assert {q for q, k in found.items() if k == "check_number"} == set(NUMBERS)
+    assert {q for q, k in found.items() if k == "check_vector"} == set(VECTORS)
+    per_lecture = {}
+    for qid in found:
+        per_lecture[qid[7:9]] = per_lecture.get(qid[7:9], 0) + 1
+    assert all(per_lecture.get(f"{n:02d}", 0) >= 2 for n in range(1, 7)), per_lecture
+
+
+_ANY_ANSWER = st.one_of(
+    st.none(),
+    st.booleans(),
+    st.text(max_size=8),
+    st.floats(allow_nan=True, allow_infinity=True),
+    st.lists(st.floats(allow_nan=True, allow_infinity=True), max_size=4),
+    st.lists(st.lists(st.integers(-5, 5), max_size=3), max_size=3),
+    st.dictionaries(st.text(max_size=2), st.integers(), max_size=2),
+)
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.sampled_from(sorted(VECTORS)), _ANY_ANSWER)
+def test_check_vector_never_raises_and_never_passes_garbage(qid, answer):
+    from course_lib.checks.lectures import check_vector
+
+    verdict = check_vector(qid, answer)  # must not raise, whatever the answer
+    assert isinstance(verdict.message, str) and verdict.message
+    if verdict.passed:  # only the right vector (two finite numbers) may pass
+        assert np.allclose(np.asarray(answer, dtype=float).ravel(), _right(VECTORS[qid]))
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    st.sampled_from(sorted(VECTORS)),
+    st.floats(-20, 20, allow_nan=False),
+    st.floats(-20, 20, allow_nan=False),
+)
+def test_check_vector_passes_exactly_the_expected_vector(qid, x, y):
+    from course_lib.checks.lectures import check_vector
+
+    right = _right(VECTORS[qid])
+    assert check_vector(qid, [x, y]).passed == bool(np.allclose([x, y], right, rtol=0, atol=1e-8))

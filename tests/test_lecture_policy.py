@@ -26,7 +26,7 @@ MAX_LINE = 88  # characters per code line
 MAX_CELLS = 45  # a 50-minute class
 MAX_HELPER_LINES = 5  # body lines of a function defined in a lecture
 EVIDENCE_TAG = "evidence"
-CHECK_CALLS = ("quiz", "check_choice", "check_value", "check_number", "check")
+CHECK_CALLS = ("quiz", "check_choice", "check_value", "check_number", "check_vector", "check")
 
 
 def _cells(path: Path) -> list[dict]:

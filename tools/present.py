@@ -2,8 +2,8 @@
 
 1. A *deck* is generated from the lecture (one source: nothing to maintain twice):
    the same cells minus the "check your understanding" answer cells (``quiz(...)``,
-   ``check_value(...)``, ``check_choice(...)``: they cannot be answered without code), in
-   ``build/present/``.
+   ``check_value(...)``, ``check_choice(...)``, ``check_number(...)``, ``check_vector(...)``:
+   they cannot be answered without code), in ``build/present/``.
 2. Voilà serves it with the course's ``course-deck`` template
    (``.jupyter-course/voila/templates/``): code hidden, a new slide at every heading,
    28 px text in lines of at most ~80 characters, PageDown/PageUp between slides,
@@ -45,7 +45,9 @@ TEMPLATE = "course-deck"
 CANVAS_PX = 1280  # >= 60 % of a 1920 px wide projector
 READY = ".deck-executed"  # written next to the deck by its last cell
 #: answer cells of "check your understanding": dropped from the deck
-ANSWER_CELL = re.compile(r"\b(quiz|check_value|check_choice|check|check_all)\s*\(")
+ANSWER_CELL = re.compile(
+    r"\b(quiz|check_value|check_choice|check_number|check_vector|check|check_all)\s*\("
+)
 
 
 def find_lecture(which: str) -> Path:

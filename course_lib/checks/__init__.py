@@ -35,12 +35,14 @@ store a *hash* of the right answer in the notebook (never the answer itself)::
     check_choice("lecture03.q1", my_answer, "5f1e...")
 
 Answers are compared case-, space- and order-insensitively (``"B, d"`` == ``["d", "b"]``).
-For a numeric answer in a lecture use :func:`course_lib.checks.lectures.check_number`,
-whose expected value is computed at check time in :mod:`course_lib.checks.lectures` (a
-lecture must not contain its answers, not even as an expression)::
+For a numeric answer in a lecture use :func:`course_lib.checks.lectures.check_number`
+(a plane vector: :func:`~course_lib.checks.lectures.check_vector`), whose expected value is
+computed at check time in :mod:`course_lib.checks.lectures` (a lecture must not contain its
+answers, not even as an expression)::
 
-    from course_lib.checks.lectures import check_number
+    from course_lib.checks.lectures import check_number, check_vector
     check_number("lecture03.q2", my_beta1)
+    check_vector("lecture01.q4", my_tangent)
 
 :func:`check_value` compares against a value passed in by the caller and never prints it
 (for solution notebooks and tests)::

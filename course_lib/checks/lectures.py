@@ -1,11 +1,12 @@
-"""Numeric "check your understanding" questions of the lecture notebooks.
+"""Numeric and vector "check your understanding" questions of the lecture notebooks.
 
 A lecture must never contain the answer to its own question, not even as an expression
 such as ``expected=(3 - 1) / (1 - 0)``.  The expected values are computed here, at check
 time, from the question's data with ``course_lib`` -- never printed::
 
-    from course_lib.checks.lectures import check_number
+    from course_lib.checks.lectures import check_number, check_vector
     check_number("lecture03.q2", my_beta1)
+    check_vector("lecture01.q4", my_tangent)      # a plane vector [x, y]
 
 Multiple-choice questions use :func:`course_lib.checks.quiz` with a salted hash instead.
 """
@@ -16,9 +17,9 @@ from collections.abc import Callable
 
 import numpy as np
 
-from ._core import Verdict, as_number, run_validate
+from ._core import Verdict, as_number, as_vector, run_validate
 
-__all__ = ["LECTURE_QUESTIONS", "check_number"]
+__all__ = ["LECTURE_QUESTIONS", "LECTURE_VECTORS", "check_number", "check_vector"]
 
 
 def _speed_after_reparametrization() -> float:  # lecture 1, Q3: speed of q(2v) at the joint
@@ -85,6 +86,48 @@ def _shape_functions_g2() -> float:  # lecture 5, Q2: seed 001 counts n(n + 3) f
     return float(count_shape_functions(2))
 
 
+def _unit_tangent_after_reparametrization() -> np.ndarray:  # lecture 1, Q4
+    # Q(u) = (3u, 4u²) reparametrized by f(v) = (v + v²)/2: unit tangent of Q∘f at v = 1/2
+    import sympy as sp
+
+    from ..differential_geometry import unit_tangent
+    from ..parametrization import ParametricCurve
+    from ..reparametrization import ChangeOfVariables, Reparametrized
+
+    u = sp.Symbol("u")
+    Q = ParametricCurve.from_sympy([3 * u, 4 * u**2], u, (0.0, 1.0))
+    f = ChangeOfVariables.polynomial([0.0, 0.5, 0.5], (0.0, 1.0), (0.0, 1.0))
+    return np.asarray(unit_tangent(Reparametrized(Q, f), 0.5), dtype=float).ravel()
+
+
+def _third_derivative_from_betas() -> np.ndarray:  # lecture 2, Q4: r'''(0) at a G3 joint
+    from ..beta_constraints import beta_constraints
+
+    bc = beta_constraints(3)
+    q_derivs = ([1.0, 0.0], [0.0, 1.0], [1.0, 1.0])  # q'(1), q''(1), q'''(1)
+    third = bc.rhs[2].subs(dict(zip(bc.betas, (2.0, 1.0, 3.0), strict=True)))
+    at_q = [{qk: d[c] for qk, d in zip(bc.q, q_derivs, strict=True)} for c in (0, 1)]
+    return np.array([float(third.subs(at)) for at in at_q])
+
+
+def _curvature_jump_at_implied_point() -> float:  # lecture 6, Q4: κ_r − κ_q at M, in 1/em
+    from ..curve import PiecewiseBezier
+    from ..differential_geometry import signed_curvature
+
+    P0, A, B, P2 = (np.array(p) for p in ([0.0, 0.0], [0.2, 0.4], [0.6, 0.4], [0.7, 0.1]))
+    M = (A + B) / 2
+    pair = PiecewiseBezier([[P0, A, M], [M, B, P2]])
+    kappa_q = signed_curvature(pair.segment_curve(0), 1.0)
+    kappa_r = signed_curvature(pair.segment_curve(1), 0.0)
+    return float(np.squeeze(kappa_r - kappa_q))
+
+
+def _g2_points_of_eight() -> float:  # lecture 6, Q5: G2 joints of DejaVu Sans' "8"
+    from ..outlines import glyph_outline, glyph_summary
+
+    return float(glyph_summary(glyph_outline("8")).g2)
+
+
 #: question id -> function computing the expected value from the question's data
 LECTURE_QUESTIONS: dict[str, Callable[[], float]] = {
     "lecture01.q3": _speed_after_reparametrization,
@@ -95,19 +138,80 @@ LECTURE_QUESTIONS: dict[str, Callable[[], float]] = {
     "lecture04.q3": _w1_x_for_beta1_half,
     "lecture05.q2": _shape_functions_g2,
     "lecture05.q3": _beta2_in_course_convention,
+    "lecture06.q4": _curvature_jump_at_implied_point,
+    "lecture06.q5": _g2_points_of_eight,
 }
+
+#: question id -> function computing the expected plane vector from the question's data
+LECTURE_VECTORS: dict[str, Callable[[], np.ndarray]] = {
+    "lecture01.q4": _unit_tangent_after_reparametrization,
+    "lecture02.q4": _third_derivative_from_betas,
+}
+
+
+def _unknown(question_id: object, vector: bool) -> Verdict:
+    """The verdict for an id that ``check_number`` (or ``check_vector``) does not know."""
+    mine, other = (LECTURE_QUESTIONS, LECTURE_VECTORS)
+    if vector:
+        mine, other = other, mine
+    if isinstance(question_id, str) and question_id in other:
+        use = "check_number" if vector else "check_vector"
+        return Verdict(question_id, False, f"this question is checked with {use}.")
+    return Verdict(str(question_id), False, f"unknown question id (known: {', '.join(mine)}).")
 
 
 def check_number(question_id: str, answer: object, rtol: float = 1e-9) -> Verdict:
     """Check a numeric lecture answer; never raises, never prints the expected value."""
     if question_id not in LECTURE_QUESTIONS:
-        known = ", ".join(LECTURE_QUESTIONS)
-        return Verdict(str(question_id), False, f"unknown question id (known: {known}).")
+        return _unknown(question_id, vector=False)
 
     def validate(a):
         value = as_number(a, "your answer")
         if np.isclose(value, LECTURE_QUESTIONS[question_id](), rtol=rtol, atol=1e-12):
             return True, "correct."
         return False, "not the expected value -- check your computation."
+
+    return run_validate(question_id, validate, answer)
+
+
+def _what_is_wrong(value: np.ndarray, expected: np.ndarray, tol: float) -> str:
+    """Name the wrong part of a vector answer without giving the expected vector away."""
+    n_v, n_e = float(np.linalg.norm(value)), float(np.linalg.norm(expected))
+    if n_v > 0 and n_e > 0:
+        cos = float(value @ expected) / (n_v * n_e)
+        if cos > 1 - 1e-12:
+            return (
+                f"it points the right way, but its length ({n_v:.6g}) is not the "
+                "expected one -- a factor missing, or one too many?"
+            )
+        if cos < -1 + 1e-12:
+            return "it is parallel to the expected vector but points the opposite way."
+    names = "xyz"
+    wrong = [names[k] for k in range(value.size) if abs(value[k] - expected[k]) > tol]
+    right = [names[k] for k in range(value.size) if names[k] not in wrong]
+    if right:
+        return (
+            f"its {' and '.join(right)}-component is right, its {' and '.join(wrong)}-component "
+            "is not -- check your computation."
+        )
+    return "neither component is the expected value -- check your computation."
+
+
+def check_vector(question_id: str, answer: object, rtol: float = 1e-9) -> Verdict:
+    """Check a plane-vector lecture answer (list, tuple, numpy array or sympy Matrix).
+
+    Never raises and never prints the expected vector.  A wrong answer is told which
+    component is wrong, or that only its length, or only its orientation, is.
+    """
+    if question_id not in LECTURE_VECTORS:
+        return _unknown(question_id, vector=True)
+
+    def validate(a):
+        value = as_vector(a, (2,), "your answer", "a plane vector [x, y]")
+        expected = LECTURE_VECTORS[question_id]()
+        tol = rtol * max(1.0, float(np.linalg.norm(expected)))
+        if np.all(np.abs(value - expected) <= tol):
+            return True, "correct."
+        return False, "not the expected vector: " + _what_is_wrong(value, expected, tol)
 
     return run_validate(question_id, validate, answer)
