@@ -192,7 +192,8 @@ def q3(student, data):
 def _right_letter(data):
     # the reason that holds at every G2 point of these glyphs: the chord P0P2 parallel to the
     # leg AB (tests/test_variants_hw05.py proves it glyph by glyph); the others are false
-    return "abcd"[data["q4"]["order"].index("parallel")]
+    letter_of = dict(zip(data["q4"]["order"], "abcd", strict=True))  # reason -> its letter
+    return letter_of["parallel"]
 
 
 def q4(student, data):
@@ -254,10 +255,10 @@ def answers_for(data):
     """The worked answers of a variant (for office hours: ``tools/variant.py show``)."""
     _, joints = _glyph_joints(data)
     return {
-        "answer_q1": _count(joints).tolist(),
+        "answer_q1": [int(x) for x in _count(joints)],
         "implied_is_g2": "|(B - A) x (P2 - P0)| <= 1e-9 |B - A| |P2 - P0| (the same for everyone)",
         "answer_q3": _curvatures(data).tolist(),
         "answer_q4": _right_letter(data),
         "g2_run": "uniform cubic B-spline on 2V0 - V1, V0..Vn, 2Vn - Vn-1 (the same for everyone)",
-        "answer_q6": _new_counts(data).tolist(),
+        "answer_q6": [int(x) for x in _new_counts(data)],
     }
