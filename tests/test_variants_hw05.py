@@ -19,6 +19,9 @@ can draw well posed, exhaustively:
   default's point never drawn again, the check ✓ on the worked answers;
 * check ✓ ⇔ full points on variants of every glyph, for accepted forms and typical mistakes;
   the example's answers lose points on every other variant.
+* (The solution notebook graded on 50 variants, and on another student's data, is tested with
+  the other homeworks with variants in ``tests/test_variants_solutions.py``; through the real
+  grader in ``tests/test_grading_variants.py``.)
 """
 
 from __future__ import annotations
