@@ -120,3 +120,24 @@ def test_show_works_for_hw04_too(secret, capsys):
     assert np.allclose(got, np.add(d["V_d"], d["beta1"] * np.subtract(d["V_d"], d["V_dm1"])))
     letter = next(x for x in text.splitlines() if "answer_q6 =" in x).split("=", 1)[1].strip().strip("'")
     assert "B-spline" in data["q6"]["options"][letter]
+
+
+def test_show_works_for_hw05_too(secret, capsys):
+    capsys.readouterr()
+    assert tool.main(["show", "hw05", "1001", "--secret-file", str(secret)]) == 0
+    text = capsys.readouterr().out
+    code = variants.code_for(secret.read_bytes().strip(), "hw05", "1001")
+    data = variants.data("hw05", code)
+    variants.data("hw05", variants.DEFAULT)
+    assert f"VARIANT = {code!r}" in text
+    assert data["glyph"]["text"] in text and data["q3"]["text"] in text and data["q6"]["text"] in text
+    # the worked letter names the option that gives the right reason in the student's order
+    letter = next(x for x in text.splitlines() if "answer_q4 =" in x).split("=", 1)[1].strip().strip("'")
+    assert data["q4"]["options"][letter].startswith("at each of them the chord P0P2")
+    # the worked curvatures are the student's: (B - A) x q''(1) / |B - A|³ in em, by hand
+    P0, A, B, _ = np.array(data["q3"]["points"]) / data["q3"]["em"]
+    v, M = B - A, (A + B) / 2
+    a = 2 * (P0 - 2 * A + M)
+    line = next(x for x in text.splitlines() if "answer_q3 =" in x)
+    got = ast.literal_eval(line.split("=", 1)[1].strip())
+    assert got[0] == pytest.approx((v[0] * a[1] - v[1] * a[0]) / np.linalg.norm(v) ** 3)

@@ -23,6 +23,7 @@ HOMEWORKS = {
     "hw02": (("q1", "q2", "q5", "q6", "q7"), 3),  # q1, q2, q5 rarely equal
     "hw03": (("q1", "q3", "q4", "q5"), 3),  # q1, q3, q5 rarely equal
     "hw04": (("q1", "q3", "q5", "q6"), 3),  # q1, q3, q5 rarely equal
+    "hw05": (("q1", "q3", "q4", "q6"), 1),  # q3 rarely equal; q1, q6 equal for glyphs of one font
 }
 HW = {hw: VariantHomework(hw) for hw in HOMEWORKS}
 SOLVED = 50

@@ -3,13 +3,24 @@
 Form: ``solutions/hidden_tests/README.md``.  Expected values come from first principles, never
 from course_lib's mathematics or the solution notebook:
 
-* the joint counts of the b: the glyph drawn by fontTools' own pen (``RecordingPen`` on the
-  font's glyph set, quadratic runs split by fontTools' ``decomposeQuadraticSegment``) and every
-  joint classified here with hand formulas (end derivatives of line and quadratic pieces);
+* the joint counts of the student's glyph: the glyph drawn by fontTools' own pen
+  (``RecordingPen`` on the font's glyph set, quadratic runs split by fontTools'
+  ``decomposeQuadraticSegment``) and every joint classified here with hand formulas (end
+  derivatives of line and quadratic pieces);
 * G2 at an implied point: exact rational arithmetic on the cross product
   ``(B - A) x (P2 - P0)`` of the data before it was rotated or scaled;
 * the runs: B-spline to Bézier conversion written out by hand, on another glyph (DejaVu Sans
   'D', DejaVu Serif 'o') than the feedback check.
+
+Per-student variants (issue 19): ``VARIANTS = True``, so the grader calls ``qN(student, data)``
+with the student's own data (``course_lib.variants.data("hw05", code)``: a b, d, p or q of one of
+four DejaVu Sans fonts, an implied point of its bowl, q4's options in the student's order).
+The data names the glyph (character, font file), the points of q3 and the order of q4's
+reasons; every expected value is computed here from the font file and those points.  The
+function questions q2 and q5 are the same for everyone.  Multiple choice is feedback only
+(course policy: a student can find the letter by trying each in ``check()``): q4 is graded but
+worth 0 points.  :func:`answers_for` gives the worked answers of a variant
+(``tools/variant.py show``).
 """
 
 from __future__ import annotations
@@ -23,16 +34,13 @@ import numpy as np
 from course_lib import answers
 
 HOMEWORK = "hw05"
-POINTS = {"q1": 2, "q2": 3, "q3": 2, "q4": 1, "q5": 4, "q6": 1}
+POINTS = {"q1": 2, "q2": 3, "q3": 2, "q4": 0, "q5": 4, "q6": 1}
 
-#: The question data as stated in the notebook.
-DATA = {
-    "glyph": ("b", "DejaVuSans.ttf"),
-    "em": 2048.0,
-    "q3": [(371, 950), (429, 1050), (606, 1147), (729, 1147)],
-    "corner_deg": 2.0,
-    "g2_rtol": 1e-8,
-}
+VARIANTS = True
+
+#: The tolerances stated in the notebook (the defaults of classify_joints); the glyph, the
+#: points of q3 and the order of q4's options are the student's data.
+DATA = {"corner_deg": 2.0, "g2_rtol": 1e-8}
 
 #: implied_is_g2 cases: base points (exact), then the transform the student's copy gets.
 #: The base decides the answer: rotating and scaling keep (non-)parallel chords.
@@ -75,15 +83,15 @@ def _cross(a, b):
 
 
 @cache
-def _pen_joints():
-    """(contour index, angle in degrees, relative curvature jump) of every joint of the b,
-    from fontTools' pen, by hand."""
+def _pen_joints(char: str, file: str):
+    """(contour index, angle in degrees, relative curvature jump) of every joint of a glyph,
+    from fontTools' pen, by hand; and the contours as lists of pieces (2 points: a line,
+    3: a quadratic)."""
     import matplotlib
     from fontTools.pens.basePen import decomposeQuadraticSegment
     from fontTools.pens.recordingPen import RecordingPen
     from fontTools.ttLib import TTFont
 
-    char, file = DATA["glyph"]
     font = TTFont(f"{matplotlib.get_data_path()}/fonts/ttf/{file}")
     pen = RecordingPen()
     font.getGlyphSet()[font.getBestCmap()[ord(char)]].draw(pen)
@@ -128,11 +136,16 @@ def _count(joints):
     return np.array([corners, len(joints) - corners - g2, g2], float)
 
 
-def q1(student):
+def _glyph_joints(data):
+    g = data["glyph"]
+    return _pen_joints(g["char"], g["file"])
+
+
+def q1(student, data):
     got = answers.array(student["answer_q1"], (3,), "answer_q1", "three counts")
-    _, joints = _pen_joints()
-    # 2 contours drawn by fontTools' pen; corners turn by 90° or 150°, smooth points by 0°
-    assert answers.close(got, _count(joints)), "the counts of the b's joints are wrong"
+    _, joints = _glyph_joints(data)
+    # 2 contours drawn by fontTools' pen; corners turn by 90° or ~150°, smooth points by 0°
+    assert answers.close(got, _count(joints)), "the counts of your glyph's joints are wrong"
 
 
 def _rotated(points, angle, scale):
@@ -143,7 +156,7 @@ def _rotated(points, angle, scale):
     ]
 
 
-def q2(student):
+def q2(student, data):
     func = student.function("implied_is_g2")
 
     def case(points, angle, scale):
@@ -159,23 +172,33 @@ def q2(student):
     return answers.partial_credit([case(*c) for c in Q2_CASES])
 
 
-def q3(student):
-    got = answers.array(student["answer_q3"], (2,), "answer_q3", "[kappa_in, kappa_out]")
-    P0, A, B, P2 = (np.array(p, float) / DATA["em"] for p in DATA["q3"])
+def _curvatures(data):
+    P0, A, B, P2 = (np.array(p, float) / data["q3"]["em"] for p in data["q3"]["points"])
     M = (A + B) / 2
     # q(u) = (1-u)² P0 + 2u(1-u) A + u² M: q'(1) = 2 (M - A) = B - A, q''(1) = 2 (P0 - 2A + M);
     # r(u) = (1-u)² M + 2u(1-u) B + u² P2: r'(0) = 2 (B - M) = B - A, r''(0) = 2 (M - 2B + P2)
     v = B - A
-    expected = (
+    return (
         np.array([_cross(v, 2 * (P0 - 2 * A + M)), _cross(v, 2 * (M - 2 * B + P2))])
         / np.linalg.norm(v) ** 3
     )
-    assert answers.close(got, expected), "the curvatures at the implied point are wrong"
 
 
-def q4(student):
+def q3(student, data):
+    got = answers.array(student["answer_q3"], (2,), "answer_q3", "[kappa_in, kappa_out]")
+    assert answers.close(got, _curvatures(data)), "the curvatures at the implied point are wrong"
+
+
+def _right_letter(data):
+    # the reason that holds at every G2 point of these glyphs: the chord P0P2 parallel to the
+    # leg AB (tests/test_variants_hw05.py proves it glyph by glyph); the others are false
+    letter_of = dict(zip(data["q4"]["order"], "abcd", strict=True))  # reason -> its letter
+    return letter_of["parallel"]
+
+
+def q4(student, data):
     letters = answers.choice(student["answer_q4"], "abcd", "answer_q4", single=True)
-    assert letters == "b", "wrong choice"
+    assert letters == _right_letter(data), "wrong choice"
 
 
 def _by_hand(V):
@@ -189,7 +212,7 @@ def _by_hand(V):
     return np.array(out)
 
 
-def q5(student):
+def q5(student, data):
     func = student.function("g2_run")
 
     def case(points):
@@ -206,14 +229,36 @@ def q5(student):
     return answers.partial_credit([case(c) for c in Q5_CASES])
 
 
-def q6(student):
+def _new_counts(data):
+    contours, joints = _glyph_joints(data)
+    counts = _count(joints)
+    # the counter (the contour without corners) keeps its joints; the outer contour keeps its
+    # corners (same points, same tangents: V1 - V0 and Vn - Vn-1) and its bowl becomes a C2
+    # B-spline.  The bowl's k quadratic pieces (between its two corners) have k off-curve
+    # points, and every on-curve point inside the bowl sits between two of them, so the run
+    # polygon is corner, k off-curve points, corner: n = k + 1 cubics with k inner G2 joints
+    # (the b of DejaVu Sans: 8 pieces, 9 cubics, 8 G2 joints)
+    per_contour = [_count([j for j in joints if j[0] == c]) for c in range(len(contours))]
+    (counter,) = [c for c, n in enumerate(per_contour) if n[0] == 0]
+    (outer,) = [c for c in range(len(contours)) if c != counter]
+    k = sum(1 for piece in contours[outer] if len(piece) == 3)
+    assert len(contours) == 2 and per_contour[outer][0] == counts[0]
+    return per_contour[counter] + np.array([counts[0], 0.0, float(k)])
+
+
+def q6(student, data):
     got = answers.array(student["answer_q6"], (3,), "answer_q6", "three counts")
-    contours, joints = _pen_joints()
-    # the counter (contour 0) keeps its joints; the outer contour keeps its corners (same
-    # points, same tangents: V1 - V0 and Vn - Vn-1) and its bowl becomes a C2 B-spline of
-    # n = 9 cubic segments (10 run points: 13 stored points minus 3 extreme on-curve points),
-    # whose 8 inner joints are G2
-    counter = _count([j for j in joints if j[0] == 0])
-    corners = _count(joints)[0]
-    expected = counter + np.array([corners, 0.0, 8.0])
-    assert len(contours) == 2 and answers.close(got, expected), "the counts of the new b are wrong"
+    assert answers.close(got, _new_counts(data)), "the counts of your glyph made G2 are wrong"
+
+
+def answers_for(data):
+    """The worked answers of a variant (for office hours: ``tools/variant.py show``)."""
+    _, joints = _glyph_joints(data)
+    return {
+        "answer_q1": [int(x) for x in _count(joints)],
+        "implied_is_g2": "|(B - A) x (P2 - P0)| <= 1e-9 |B - A| |P2 - P0| (the same for everyone)",
+        "answer_q3": _curvatures(data).tolist(),
+        "answer_q4": _right_letter(data),
+        "g2_run": "uniform cubic B-spline on 2V0 - V1, V0..Vn, 2Vn - Vn-1 (the same for everyone)",
+        "answer_q6": [int(x) for x in _new_counts(data)],
+    }

@@ -278,7 +278,7 @@ TARGETED = [
     ("hw05.q3", np.array([-23862.0, -24148.0]) * 2048 / 40738**1.5, "swapped"),
     ("hw05.q3", np.array([24148.0, 23862.0]) * 2048 / 40738**1.5, "sign"),
     ("hw05.q6", np.array([6, 0, 8]), "outer contour only"),
-    ("hw05.q6", np.array([6, 10, 5]), "original b"),
+    ("hw05.q6", np.array([6, 10, 5]), "original glyph"),
 ]
 
 

@@ -10,10 +10,11 @@
 # # Homework 5 — Are letters smooth?
 #
 # The lecture measured the S, O, g and @ of DejaVu Sans. Here you take a letter the lecture did
-# not show, the lower-case **b** of DejaVu Sans: classify every joint of its outline, compute
-# the curvature jump at one implied point by hand, write the G2 test of an implied point, and
-# then make the outer contour of the b G2 **while keeping its corners** — the stem must stay a
-# stem.
+# not show, a lower-case letter with a **bowl** and a **stem** (the b of DejaVu Sans in the
+# example data; a b, d, p or q of DejaVu Sans, Sans Bold, Sans Mono or Sans Mono Bold in yours):
+# classify every joint of its outline, compute the curvature jump at one implied point by hand,
+# write the G2 test of an implied point, and then make the outer contour of your glyph G2
+# **while keeping its corners** — the stem must stay a stem.
 #
 # **How to work.** Replace each `...` by your answer (or write the body of the function), run the
 # cell, then run the **check cell** below it:
@@ -22,10 +23,16 @@
 # - ✗ what is wrong, in the terms of the course;
 # - … not answered yet.
 #
-# The checks are feedback, not the grade: the grade comes from other tests with other data (other
-# points, another glyph), so write code that works in general. Keep the names (`answer_q1`,
-# `implied_is_g2`, ...), do not delete cells, and before you hand in run
-# *Kernel → Restart Kernel and Run All Cells*.
+# The checks are feedback, not the grade: the grade comes from the grader's own tests, on your data
+# and, for the functions, on other data (other points, other glyphs), so write code that works in
+# general. Keep the names (`answer_q1`, `implied_is_g2`, ...), do not delete cells, and before you
+# hand in run *Kernel → Restart Kernel and Run All Cells*.
+#
+# **Your own data.** Every student gets their own glyph, point and option order: paste the
+# *variant code* your instructor gave you into `VARIANT` below. The cells marked "your data" print
+# the data of each question; your code should use `DATA[...]` rather than typing the numbers. With
+# `VARIANT = ""` you get the example data, the b of DejaVu Sans (fine for practice, but graded on
+# your own data it scores nothing).
 
 # %% [markdown]
 # ## Preparations
@@ -34,19 +41,24 @@
 import matplotlib.pyplot as plt
 import numpy as np
 
-from course_lib import PiecewiseBezier
+from course_lib import PiecewiseBezier, variants
 from course_lib.beta_splines import cubic_beta_spline
 from course_lib.checks import check, check_all
 from course_lib.outlines import Contour, Outline, classify_joints, glyph_outline, glyph_summary
 from course_lib.plotting import plot_outline
 
 HOMEWORK = "hw05"
-b = glyph_outline("b")  # DejaVu Sans, coordinates in em (font units / 2048)
+VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "ABCDE23456"
+DATA = variants.data(HOMEWORK, VARIANT)
+
+# your glyph, coordinates in em (font units / units per em)
+glyph = glyph_outline(DATA["glyph"]["char"], DATA["glyph"]["font"])
+print(DATA["glyph"]["text"])  # your data
 
 # %% [markdown]
-# ## Question 1 — classify the joints of the b (compute)
+# ## Question 1 — classify the joints of your glyph (compute)
 #
-# The b has two contours: the outer one (stem and bowl) and the counter inside the bowl. With
+# Your glyph has two contours: the outer one (stem and bowl) and the counter inside the bowl. With
 # the lecture's tolerances (the defaults of `classify_joints`: a **corner** where the tangent
 # turns by more than 2°; otherwise a smooth point, **G2** if the curvature jump relative to the
 # local curvature is at most $10^{-8}$, else **G1**), count the joints of the whole glyph, the
@@ -55,7 +67,7 @@ b = glyph_outline("b")  # DejaVu Sans, coordinates in em (font units / 2048)
 
 # %%
 ### BEGIN SOLUTION
-counts = classify_joints(b).counts()
+counts = classify_joints(glyph).counts()
 answer_q1 = np.array([counts["corner"], counts["G1"], counts["G2"]])
 assert counts["gap"] == counts["singular"] == 0
 ### END SOLUTION
@@ -94,15 +106,20 @@ check("hw05.q2", implied_is_g2)
 # %% [markdown]
 # ## Question 3 — the curvature jump at one implied point (compute)
 #
-# At the top left of the bowl of the b, the outer contour has the points (font units)
-# $P_0 = (371, 950)$ (on-curve), $A = (429, 1050)$, $B = (606, 1147)$ (off-curve), and the next
-# on-curve point is $P_2 = (729, 1147)$; between $A$ and $B$ lies the implied point $M$.
-# Compute, **in em** (divide the coordinates by 2048 first), the signed curvature
-# $\kappa = (\mathbf x' \times \mathbf x'')/|\mathbf x'|^3$ at $M$ on both sides: at the end of
-# the segment $P_0, A, M$ and at the start of $M, B, P_2$. `answer_q3 = [kappa_in, kappa_out]`.
+# On the bowl of your glyph, the outer contour has four consecutive stored points (font units,
+# printed below): $P_0$ (on-curve), $A$, $B$ (off-curve) and the next on-curve point $P_2$; between
+# $A$ and $B$ lies the implied point $M$ (in the example data, at the top left of the bowl of the
+# b: $P_0 = (371, 950)$, $A = (429, 1050)$, $B = (606, 1147)$, $P_2 = (729, 1147)$). Compute,
+# **in em** (divide the coordinates by the units per em, `DATA["q3"]["em"]`, first), the signed
+# curvature $\kappa = (\mathbf x' \times \mathbf x'')/|\mathbf x'|^3$ at $M$ on both sides: at the
+# end of the segment $P_0, A, M$ and at the start of $M, B, P_2$.
+# `answer_q3 = [kappa_in, kappa_out]`.
 
 # %%
-pts_q3 = np.array([[371, 950], [429, 1050], [606, 1147], [729, 1147]]) / 2048
+print(DATA["q3"]["text"])  # your data
+
+# %%
+pts_q3 = np.array(DATA["q3"]["points"]) / DATA["q3"]["em"]  # P0, A, B, P2 in em
 ### BEGIN SOLUTION
 P0, A, B, P2 = pts_q3
 M = (A + B) / 2
@@ -117,7 +134,7 @@ kappa_in = signed_curvature(2 * (M - A), 2 * (P0 - 2 * A + M))
 kappa_out = signed_curvature(2 * (B - M), 2 * (M - 2 * B + P2))
 answer_q3 = np.array([kappa_in, kappa_out])
 # the same as classify_joints: the joint of the outer contour at M
-t = classify_joints(b)
+t = classify_joints(glyph)
 k = np.flatnonzero(np.all(np.isclose(t.point, M, rtol=0, atol=1e-12), axis=1))[0]
 assert np.allclose(answer_q3, [t.kappa_in[k], t.kappa_out[k]]) and not implied_is_g2(P0, A, B, P2)
 ### END SOLUTION
@@ -127,22 +144,21 @@ assert np.allclose(answer_q3, [t.kappa_in[k], t.kappa_out[k]]) and not implied_i
 check("hw05.q3", answer_q3)
 
 # %% [markdown]
-# ## Question 4 — where is the b G2? (multiple choice)
+# ## Question 4 — where is your glyph G2? (multiple choice, feedback only: 0 points)
 #
-# Question 1 found a few G2 smooth points on the b. Look at where they are
-# (`classify_joints(b).point[classify_joints(b).kind == "G2"]`) and at the points around them.
-# They are G2 because
-#
-# (a) they are explicit on-curve points, and TrueType makes every explicit smooth point G2
-# (b) at each of them the chord $P_0P_2$ of the two neighbouring quadratics is parallel to the
-# off-curve leg $AB$ (the point is the midpoint of $A$ and $B$, and the bowl is mirror-symmetric
-# about the line through it)
-# (c) the tangent turns there by less than 2°, and that makes a smooth point G2
-# (d) the curvature is zero on both sides, as where a straight line continues a straight line
+# Question 1 found a few G2 smooth points on your glyph. Look at where they are
+# (`classify_joints(glyph).point[classify_joints(glyph).kind == "G2"]`) and at the points around
+# them. Why are they G2? The cell below prints four reasons (a)–(d), in your own order; answer
+# with the letter of the right one. (Multiple choice is feedback only in this course: `check()`
+# tells you whether your letter is right, and the question earns no points.)
+
+# %%
+print(DATA["q4"]["text"])  # your data
 
 # %%
 ### BEGIN SOLUTION
-answer_q4 = "b"
+# the reason that holds: the chord P0P2 is parallel to the leg AB at every G2 point
+(answer_q4,) = [x for x, text in DATA["q4"]["options"].items() if text.startswith("at each of them the chord")]
 ### END SOLUTION
 ### STUDENT answer_q4 = ...
 
@@ -150,12 +166,14 @@ answer_q4 = "b"
 check("hw05.q4", answer_q4)
 
 # %% [markdown] solution
-# The five G2 points are the four extremes of the counter and the rightmost point of the bowl:
-# the on-curve point is stored, but it sits exactly at the midpoint of its off-curve
-# neighbours, and the neighbouring points are mirror images about the horizontal or vertical
-# line through it, so $(B - A) \times (P_2 - P_0) = 0$. The top and bottom points of the bowl
-# are stored too, but the bowl is not symmetric about a vertical line (its left end meets the
-# stem): they are not midpoints of their neighbours, and they are only G1.
+# The G2 points are extremes of the counter or of the bowl (in the b of DejaVu Sans: the four
+# extremes of the counter and the rightmost point of the bowl): the on-curve point is stored,
+# but it sits exactly at the midpoint of its off-curve neighbours $A$, $B$, and the leg $AB$ and
+# the chord $P_0P_2$ are both horizontal (or both vertical), so $(B - A) \times (P_2 - P_0) = 0$.
+# The other stored smooth points (in the b, the top and bottom of the bowl, whose left end meets
+# the stem) are not at such a level place: they are only G1. Reason (a) is false (explicit G1
+# points exist), (c) too (every smooth point turns by less than 2°), and (d) (the curvature at a
+# G2 point of a bowl is not zero).
 
 # %% [markdown]
 # ## Question 5 — a G2 run between two corners (write a function)
@@ -192,36 +210,45 @@ def g2_run(V):
 check("hw05.q5", g2_run)
 
 # %% [markdown]
-# ## Question 6 — the b made G2, corners kept (compute)
+# ## Question 6 — your glyph made G2, corners kept (compute)
 #
-# The outer contour of the b starts at the corner where the bowl leaves the stem at the top,
-# runs round the bowl to the corner where it meets the stem at the bottom (stored point 12),
-# then along straight lines round the stem back to the start. The cell below gives the run
-# polygon of the bowl: the stored points 0 to 12 without the on-curve points that sit between
-# two off-curve points (they lie on the legs of the polygon, as in the lecture's O).
+# The outer contour of your glyph runs round the bowl from the corner where the bowl leaves the
+# stem to the corner where it meets the stem again, then along straight lines round the stem
+# back to the start. Your data gives the stored point indices (`glyph.points[c]` holds the
+# stored points and on-curve flags of contour `c`): `DATA["q6"]["bowl"]`, the bowl from corner
+# to corner (in the b of the example data: 0, 1, ..., 12), and `DATA["q6"]["stem"]`, the stem
+# from that corner back to the first one (in the b: 12 → 13 → 14 → 15 → 16 → 0). The cell
+# below gives the run polygon of the bowl: its stored points without the on-curve points that
+# sit between two off-curve points (they lie on the legs of the polygon, as in the lecture's O).
 #
-# Replace the bowl by `g2_run(V_bowl)` and keep the five straight lines of the stem (stored
-# points 12 → 13 → 14 → 15 → 16 → 0); keep the counter as it is. Build the new glyph as an
-# `Outline` of two closed contours, `Outline((counter, Contour(curve, True, flags)), "name")`
-# with `flags = np.zeros(curve.n_segments, bool)` (a closed contour has one joint per segment,
-# none of them implied now), and classify its joints as in question 1:
+# Replace the bowl by `g2_run(V_bowl)` and keep the straight lines of the stem; keep the counter
+# (contour `DATA["q6"]["counter"]`) as it is. Build the new glyph as an `Outline` of two closed
+# contours, `Outline((counter, Contour(curve, True, flags)), "name")` with
+# `flags = np.zeros(curve.n_segments, bool)` (a closed contour has one joint per segment, none of
+# them implied now), and classify its joints as in question 1:
 # `answer_q6 = [corners, G1 not G2, G2]`.
 
 # %%
-P_outer, on_outer = b.points[1]
-between_off = on_outer[1:12] & ~on_outer[:11] & ~on_outer[2:13]
-V_bowl = P_outer[:13][~np.concatenate([[False], between_off, [False]])]
+print(DATA["q6"]["text"])  # your data
+
+# %%
+P_outer, on_outer = glyph.points[DATA["q6"]["outer"]]
+bowl, stem = DATA["q6"]["bowl"], DATA["q6"]["stem"]  # stored point indices
+P_bowl, on_bowl = P_outer[bowl], on_outer[bowl]
+between_off = on_bowl[1:-1] & ~on_bowl[:-2] & ~on_bowl[2:]
+V_bowl = P_bowl[np.concatenate([[True], ~between_off, [True]])]
 len(P_outer), V_bowl.shape
 
 # %%
 ### BEGIN SOLUTION
-stem = [P_outer[[i, (i + 1) % len(P_outer)]] for i in range(12, len(P_outer))]
-outer = PiecewiseBezier(list(g2_run(V_bowl)) + stem)
-b_g2 = Outline((b.contours[0], Contour(outer, True, np.zeros(outer.n_segments, bool))), "b, bowl G2")
-counts = classify_joints(b_g2).counts()
+lines = [P_outer[[stem[k], stem[k + 1]]] for k in range(len(stem) - 1)]  # straight lines
+outer = PiecewiseBezier(list(g2_run(V_bowl)) + lines)
+counter = glyph.contours[DATA["q6"]["counter"]]
+glyph_g2 = Outline((counter, Contour(outer, True, np.zeros(outer.n_segments, bool))), f"{glyph.name}, bowl G2")
+counts = classify_joints(glyph_g2).counts()
 answer_q6 = np.array([counts["corner"], counts["G1"], counts["G2"]])
 # the corners are the same points with the same angles
-t_old, t_new = classify_joints(b), classify_joints(b_g2)
+t_old, t_new = classify_joints(glyph), classify_joints(glyph_g2)
 old, new = t_old.kind == "corner", t_new.kind == "corner"
 assert np.allclose(sorted(t_old.angle[old]), sorted(t_new.angle[new]), rtol=0, atol=1e-9)
 assert np.allclose(np.sort(t_old.point[old], axis=0), np.sort(t_new.point[new], axis=0))
@@ -233,14 +260,14 @@ check("hw05.q6", answer_q6)
 
 # %% solution
 fig, axes = plt.subplots(1, 2, figsize=(10, 5.4))
-for ax, outline in zip(axes, (b, b_g2), strict=True):
-    plot_outline(ax, outline, comb_scale=0.01, teeth_per_segment=25, legend=(outline is b_g2))
+for ax, outline in zip(axes, (glyph, glyph_g2), strict=True):
+    plot_outline(ax, outline, comb_scale=0.01, teeth_per_segment=25, legend=(outline is glyph_g2))
     ax.set_title(f"{outline.name}: {glyph_summary(outline).g2} G2 points")
 plt.show()
 
 # %% [markdown] solution
 # Left, the glyph: the comb of the bowl steps at every purple point. Right, the bowl rebuilt
-# with `g2_run`: the comb runs on through every joint of the bowl, the six corners are where they
+# with `g2_run`: the comb runs on through every joint of the bowl, the corners are where they
 # were with the same angles, and the curvature falls to zero at the two corners (the phantom
 # vertices make $V_{-1} - 2V_0 + V_1 = 0$). The price, as in the lecture: the bowl no longer passes
 # through the font's on-curve points.
