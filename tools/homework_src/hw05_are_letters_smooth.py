@@ -26,7 +26,8 @@
 # The checks are feedback, not the grade: the grade comes from the grader's own tests, on your data
 # and, for the functions, on other data (other points, other glyphs), so write code that works in
 # general. Keep the names (`answer_q1`, `implied_is_g2`, ...), do not delete cells, and before you
-# hand in run *Kernel → Restart Kernel and Run All Cells*.
+# hand in run *Kernel → Restart Kernel and Run All Cells*. Multiple-choice questions are for
+# practice, worth 0 points: a letter can be found by trying each one in its check.
 #
 # **Your own data.** Every student gets their own glyph, point and option order: paste the
 # *variant code* your instructor gave you into `VARIANT` below. The cells marked "your data" print
