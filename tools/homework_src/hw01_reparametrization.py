@@ -20,8 +20,9 @@
 # - ✗ what is wrong, in the terms of the course;
 # - … not answered yet.
 #
-# The checks are feedback, not the grade: the grade comes from other tests with other data, so
-# write code that works in general. Keep the names (`answer_q1`, `chain_rule_derivatives`, ...),
+# The checks are feedback, not the grade: the grade comes from the grader's own tests, on your
+# data and, for the functions, on other data too, so write code that works in general. Keep
+# the names (`answer_q1`, `chain_rule_derivatives`, ...),
 # do not delete cells, and before you hand in run *Kernel → Restart Kernel and Run All Cells*.
 # Multiple-choice questions are for practice, worth 0 points: a letter can be found by trying
 # each one in its check.
@@ -251,4 +252,4 @@ report
 #
 # Either runs the notebook top to bottom in a fresh kernel, as the grader will, lists the cells that
 # fail, and writes `submissions/hw01-your-id.ipynb`. Upload that file. The checks above are feedback;
-# your grade comes from the grader's own tests with other data.
+# your grade comes from the grader's own tests, on your data (and, for functions, other data).

@@ -20,8 +20,9 @@
 #
 # **How to work.** Replace each `...` by your answer (or write the body of the function), run the
 # cell, then run the **check cell** below it: ✓ right, ✗ what is wrong, … not answered yet.
-# The checks are feedback; the grade comes from other tests with other data. Keep the names, do
-# not delete cells, and before you hand in run *Kernel → Restart Kernel and Run All Cells*.
+# The checks are feedback; the grade comes from the grader's own tests, on your data and, for
+# the functions, on other data too. Keep the names, do not delete cells, and before you hand in
+# run *Kernel → Restart Kernel and Run All Cells*.
 # Multiple-choice questions are for practice, worth 0 points: a letter can be found by trying
 # each one in its check.
 #
@@ -255,4 +256,4 @@ report
 #
 # Either runs the notebook top to bottom in a fresh kernel, as the grader will, lists the cells that
 # fail, and writes `submissions/hw02-your-id.ipynb`. Upload that file. The checks above are feedback;
-# your grade comes from the grader's own tests with other data.
+# your grade comes from the grader's own tests, on your data (and, for functions, other data).

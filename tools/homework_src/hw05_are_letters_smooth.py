@@ -295,4 +295,4 @@ report
 #
 # Either runs the notebook top to bottom in a fresh kernel, as the grader will, lists the cells that
 # fail, and writes `submissions/hw05-your-id.ipynb`. Upload that file. The checks above are feedback;
-# your grade comes from the grader's own tests with other data.
+# your grade comes from the grader's own tests, on your data (and, for functions, other data).
