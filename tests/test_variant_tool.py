@@ -73,71 +73,65 @@ def test_codes_for_the_lms_are_the_codes_the_grader_computes(secret, tmp_path, c
         tool.main(["codes", "hw01", "--secret-file", str(short), "--roster", str(roster)])
 
 
-def test_show_prints_the_students_data_and_worked_answers(secret, capsys):
+def _show(secret, capsys, hw: str) -> tuple[str, dict, dict[str, str]]:
+    """``variant.py show hw 1001``: its text, the student's data and the worked answers' text."""
     capsys.readouterr()
-    assert tool.main(["show", "hw01", "1001", "--secret-file", str(secret)]) == 0
+    assert tool.main(["show", hw, "1001", "--secret-file", str(secret)]) == 0
     text = capsys.readouterr().out
-    code = variants.code_for(secret.read_bytes().strip(), "hw01", "1001")
-    data = variants.data("hw01", code)
-    assert f"VARIANT = {code!r}" in text
+    code = variants.code_for(secret.read_bytes().strip(), hw, "1001")
+    data = variants.data(hw, code)
+    variants.data(hw, variants.DEFAULT)
+    assert f"VARIANT = {code!r}" in text  # the line the student pastes
+    worked = {}
+    for line in text.splitlines():
+        name, sep, value = line.strip().partition(" = ")
+        if sep and name.startswith("answer_"):
+            worked[name] = value.strip()
+    return text, data, worked
+
+
+def test_show_prints_the_students_data_and_worked_answers(secret, capsys):
+    text, data, worked = _show(secret, capsys, "hw01")
     assert data["q1"]["text"] in text and data["q5"]["text"] in text
     assert "Worked answers:" in text and "answer_q7 = " in text
     # the worked unit tangent is the one of the student's curve: c'(t0) normalized, by hand
     d = data["q1"]
     t = d["t"]
     c1 = np.array([d["x"][1] + 2 * d["x"][2] * t, d["y"][1] + 3 * d["y"][3] * t * t])
-    line = next(x for x in text.splitlines() if "answer_q1 =" in x)
-    got = np.array(ast.literal_eval(line.split("=", 1)[1].strip()))
+    got = np.array(ast.literal_eval(worked["answer_q1"]))
     assert np.allclose(got, c1 / np.linalg.norm(c1))
 
 
 def test_show_works_for_hw02_too(secret, capsys):
-    capsys.readouterr()
-    assert tool.main(["show", "hw02", "1001", "--secret-file", str(secret)]) == 0
-    text = capsys.readouterr().out
-    code = variants.code_for(secret.read_bytes().strip(), "hw02", "1001")
-    data = variants.data("hw02", code)
-    assert f"VARIANT = {code!r}" in text and data["q2"]["text"] in text
+    text, data, worked = _show(secret, capsys, "hw02")
+    assert data["q2"]["text"] in text
     # the worked β1 is the student's: r'(0) = β1 q'(1), read off the first coordinate by hand
     d = data["q1"]
-    line = next(x for x in text.splitlines() if "answer_q1 =" in x)
-    assert float(line.split("=", 1)[1]) == pytest.approx(d["r1"][0] / d["q1"][0])
-    letter = next(x for x in text.splitlines() if "answer_q6 =" in x).split("=", 1)[1].strip().strip("'")
+    assert float(worked["answer_q1"]) == pytest.approx(d["r1"][0] / d["q1"][0])
+    letter = worked["answer_q6"].strip("'")
     assert "C²" in data["q6"]["options"][letter]
 
 
 def test_show_works_for_hw04_too(secret, capsys):
-    capsys.readouterr()
-    assert tool.main(["show", "hw04", "1001", "--secret-file", str(secret)]) == 0
-    text = capsys.readouterr().out
-    code = variants.code_for(secret.read_bytes().strip(), "hw04", "1001")
-    data = variants.data("hw04", code)
-    assert f"VARIANT = {code!r}" in text and data["q3"]["text"] in text and data["q6"]["text"].splitlines()[0] in text
+    text, data, worked = _show(secret, capsys, "hw04")
+    assert data["q3"]["text"] in text and data["q6"]["text"].splitlines()[0] in text
     # the worked W1 is the student's: V_d + β1 (V_d − V_{d−1}), by hand
     d = data["q1"]
-    line = next(x for x in text.splitlines() if "answer_q1 =" in x)
-    got = np.array(ast.literal_eval(line.split("=", 1)[1].strip()))
+    got = np.array(ast.literal_eval(worked["answer_q1"]))
     assert np.allclose(got, np.add(d["V_d"], d["beta1"] * np.subtract(d["V_d"], d["V_dm1"])))
-    letter = next(x for x in text.splitlines() if "answer_q6 =" in x).split("=", 1)[1].strip().strip("'")
+    letter = worked["answer_q6"].strip("'")
     assert "B-spline" in data["q6"]["options"][letter]
 
 
 def test_show_works_for_hw05_too(secret, capsys):
-    capsys.readouterr()
-    assert tool.main(["show", "hw05", "1001", "--secret-file", str(secret)]) == 0
-    text = capsys.readouterr().out
-    code = variants.code_for(secret.read_bytes().strip(), "hw05", "1001")
-    data = variants.data("hw05", code)
-    variants.data("hw05", variants.DEFAULT)
-    assert f"VARIANT = {code!r}" in text
+    text, data, worked = _show(secret, capsys, "hw05")
     assert data["glyph"]["text"] in text and data["q3"]["text"] in text and data["q6"]["text"] in text
     # the worked letter names the option that gives the right reason in the student's order
-    letter = next(x for x in text.splitlines() if "answer_q4 =" in x).split("=", 1)[1].strip().strip("'")
+    letter = worked["answer_q4"].strip("'")
     assert data["q4"]["options"][letter].startswith("at each of them the chord P0P2")
     # the worked curvatures are the student's: (B - A) x q''(1) / |B - A|³ in em, by hand
     P0, A, B, _ = np.array(data["q3"]["points"]) / data["q3"]["em"]
     v, M = B - A, (A + B) / 2
     a = 2 * (P0 - 2 * A + M)
-    line = next(x for x in text.splitlines() if "answer_q3 =" in x)
-    got = ast.literal_eval(line.split("=", 1)[1].strip())
+    got = ast.literal_eval(worked["answer_q3"])
     assert got[0] == pytest.approx((v[0] * a[1] - v[1] * a[0]) / np.linalg.norm(v) ** 3)
