@@ -7,7 +7,16 @@ solutions/ (options in pyproject.toml).  Notebooks under tests/fixtures/ are dat
 
 from __future__ import annotations
 
+import base64
+import struct
 from pathlib import Path
+
+import pytest
+
+#: Widest static figure of a lecture, in pixels as shown inline: the notebook column of
+#: JupyterLab on a 1366×768 laptop screen with the file browser open is about 880–900 px;
+#: a wider PNG is scaled down and its text, drawn at the course style's sizes, becomes tiny.
+MAX_FIGURE_WIDTH_PX = 900
 
 
 def pytest_ignore_collect(collection_path: Path, config) -> bool | None:
@@ -31,3 +40,46 @@ def _hypothesis_profiles() -> None:
 
 
 _hypothesis_profiles()
+
+
+def png_width(data: str | bytes, metadata: dict | None = None) -> int:
+    """Displayed width in pixels of a base64 PNG output: ``metadata["width"]`` when the
+    kernel sent one (retina figures are shown at half their pixel width), else the width
+    in the PNG's IHDR header."""
+    if metadata and "width" in metadata:
+        return int(metadata["width"])
+    if isinstance(data, bytes):
+        data = data.decode("ascii")
+    raw = base64.b64decode("".join(data.split())[:64])
+    if raw[:8] != b"\x89PNG\r\n\x1a\n" or raw[12:16] != b"IHDR":
+        raise ValueError("data must be a base64-encoded PNG image")
+    return struct.unpack(">I", raw[16:20])[0]
+
+
+def too_wide_figures(outputs, limit: int = MAX_FIGURE_WIDTH_PX) -> list[int]:
+    """Widths of the PNG images among a cell's ``outputs`` that are wider than ``limit``."""
+    widths = []
+    for out in outputs or ():
+        png = out.get("data", {}).get("image/png")
+        if png:
+            widths.append(png_width(png, out.get("metadata", {}).get("image/png")))
+    return [w for w in widths if w > limit]
+
+
+@pytest.hookimpl(wrapper=True)
+def pytest_runtest_call(item):
+    """Under nbval, a lecture cell (notebooks/*.ipynb) fails when it shows a figure wider
+    than :data:`MAX_FIGURE_WIDTH_PX`.  Costs nothing extra: nbval keeps each cell's outputs
+    (``item.test_outputs``) and only the PNG headers are read."""
+    result = yield
+    path = Path(str(getattr(item, "path", item.fspath)))
+    if path.suffix == ".ipynb" and path.parent.name == "notebooks":
+        wide = too_wide_figures(getattr(item, "test_outputs", None))
+        if wide:
+            pytest.fail(
+                f"figure {wide[0]} px wide; a lecture figure may be at most "
+                f"{MAX_FIGURE_WIDTH_PX} px (figsize width ≤ 8.8 in at the course's 100 dpi: "
+                "fewer inches or panels per row, never a lower dpi)",
+                pytrace=False,
+            )
+    return result

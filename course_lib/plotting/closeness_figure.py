@@ -20,5 +20,6 @@ def plot_closeness(axes, reference: np.ndarray, others: Sequence[tuple]) -> list
         lines += ax.plot(*np.asarray(points).T, lw=1.2, label=label)
         ax.legend(loc="lower center", fontsize=9)
         ax.set_aspect("equal")
+        ax.locator_params(axis="x", nbins=4)  # narrow panels: tick labels must not touch
         ax.set_title(title)
     return lines

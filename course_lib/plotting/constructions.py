@@ -469,6 +469,10 @@ def plot_knot_joint_construction(
         Finn's 1-based joint indices ``i`` (``1 .. L-1``); default all.
     d_points : array_like of shape (2L + 2, 2), optional
         Finn's control points ``d_{-1} .. d_{2L}``, drawn as the black polygon.
+    offset : float
+        Distance of the knot copy from ``p_{3i-1} p_{3i+1}``, as a fraction of the picture
+        size; its sign chooses the side (negative: the other side), so the copy and its
+        labels can be put where the curve is not.
 
     Returns
     -------
@@ -479,6 +483,10 @@ def plot_knot_joint_construction(
     k = np.asarray(curve.knots if knots is None else knots, dtype=float)
     if k.shape != (curve.n_segments + 1,):
         raise ValueError(f"knots must have {curve.n_segments + 1} values; got {k.size}")
+    if not np.isfinite(offset):
+        raise ValueError(
+            f"offset must be a finite number (a fraction of the picture size); got {offset}"
+        )
     L = curve.n_segments
     idx = list(range(1, L)) if joints is None else [int(i) for i in joints]
     for i in idx:
@@ -522,7 +530,7 @@ def plot_knot_joint_construction(
     offs = {}
     for i in idx:  # knot labels on the far side of the knot copy, away from the curve
         ab = segs[i][1] - segs[i - 1][2]
-        away = np.array([ab[1], -ab[0]]) / (np.linalg.norm(ab) or 1.0)
+        away = np.copysign(1.0, offset) * np.array([ab[1], -ab[0]]) / (np.linalg.norm(ab) or 1.0)
         for nm in (f"ta{i}", f"tp{i}", f"tb{i}"):
             offs[nm] = (float(14 * away[0]), float(14 * away[1]))
     return _draw(ax, diagram, label_offsets=offs)

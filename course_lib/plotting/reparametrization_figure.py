@@ -67,7 +67,9 @@ def plot_reparametrization(axes, Q, f, v0: float, *, n: int = 9, scale: float = 
     tips = np.array([p + off + scale * vel, p - off + scale * vel_f])
     ax.update_datalim(tips)  # quivers do not autoscale: keep the arrow tips in view
     ax.autoscale_view()
-    ax.legend(loc="lower center", ncol=2, fontsize=9)
+    # Below the panel, one column: inside it, the legend would cover the curve or an axis
+    # once the figure fits a laptop's notebook column (about 9 inches).
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.1), fontsize=9)
     ax.set_title("one curve, two parametrizations")
     grid = np.linspace(a, b, 101)
     (art["graph"],) = fax.plot(grid, f(grid), color=red, lw=2.4)

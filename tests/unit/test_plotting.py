@@ -328,6 +328,24 @@ def test_knot_joint_construction_links_are_parallel(ax):
         plot_knot_joint_construction(ax, c, joints=[3])
 
 
+def test_knot_joint_construction_offset_sign_chooses_the_side(ax):
+    # the knot copy and its labels go to the side the sign of `offset` says, for the notebook
+    # to put them where the curve is not (nb03-057)
+    c = PiecewiseBezier(
+        [[[0, 0], [1, 2], [2, 2], [3, 1]], [[3, 1], [4, 0], [5, 0], [6, 1]]], knots=[0, 1, 3]
+    )
+    a, b = np.array([2.0, 2.0]), np.array([4.0, 0.0])  # p2 and p4
+    side = np.array([-(b - a)[1], (b - a)[0]])  # left of p2 -> p4
+    for offset, sign in ((0.12, -1), (-0.12, 1)):
+        ax.clear()
+        dg = plot_knot_joint_construction(ax, c, offset=offset)
+        copy = np.array(dg.artists["label:ta1"].xy) - a
+        assert sign * copy @ side > 0
+        assert sign * np.array(dg.artists["label:ta1"].xyann) @ side > 0  # labels outward
+    with pytest.raises(ValueError, match="offset must be a finite number"):
+        plot_knot_joint_construction(ax, c, offset=float("nan"))
+
+
 def test_beta_spline_construction_reads_the_segments(ax):
     Vp = np.array([[0, 0], [1, 2], [3, 2], [4, 0]], float)
     b1 = 2.0
