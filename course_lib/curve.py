@@ -51,28 +51,33 @@ def _horner_chunk(t: np.ndarray, table: np.ndarray, halves: tuple, out: np.ndarr
     """Evaluate the two-sided Taylor form at in-domain parameters ``t`` into ``out``."""
     bp, anchor, hh, unit = halves
     last = anchor.size - 1
+    # j is within [0, last] by construction: mode="clip" skips take()'s bounds checks.
     if unit:
         # Knots 0, 1, ..., S and t >= 0: the half-segment index is floor(2 t), exactly,
         # and t - anchor is exact (Sterbenz), so no search and no division.
         j = (t * 2.0).astype(np.intp)
         np.minimum(j, last, out=j)
-        w = t - anchor.take(j)
+        w = t - anchor.take(j, mode="clip")
     else:
         j = np.searchsorted(bp, t, side="right")
         j -= 1
         np.clip(j, 0, last, out=j)
-        w = t - anchor.take(j)
-        w /= hh.take(j)
+        w = t - anchor.take(j, mode="clip")
+        w /= hh.take(j, mode="clip")
     # One coordinate at a time on contiguous 1-d arrays (the table is laid out
     # (level, coordinate, half) for that): an (m, dim) array times an (m, 1) column
     # runs an inner loop of length dim and costs several times more.
     top = table.shape[0] - 1
     for c in range(table.shape[1]):
-        acc = table[top, c].take(j)
-        for k in range(top - 1, -1, -1):
+        acc = table[top, c].take(j, mode="clip")
+        if top == 0:
+            out[:, c] = acc
+            continue
+        for k in range(top - 1, 0, -1):
             acc *= w
-            acc += table[k, c].take(j)
-        out[:, c] = acc
+            acc += table[k, c].take(j, mode="clip")
+        acc *= w
+        np.add(acc, table[0, c].take(j, mode="clip"), out=out[:, c])
 
 
 @lru_cache(maxsize=64)
