@@ -64,9 +64,11 @@ SEPARATION = 4.0
 #: level-to-level difference underestimates the error (1e-13 leaves up to 8e-13 on the
 #: near-cusps of ``tests/unit/test_arc_length_fast.py``); 1e-15 leaves about 2e-16.
 ROBUST_RTOL = 1e-15
-# Lengths outside this range go to the robust path, which scales by powers of two
-# first (the fast path's products must neither overflow nor become subnormal).
-_RANGE = (1e-250, 1e250)
+# The fast path sums plain squares: a length in this range proves that no square
+# overflowed (|q'| <= C L for a polynomial, C far below 1e50) and that an underflow
+# changed no speed by more than 1e-154, relative 1e-54.  Other segments are scaled by
+# powers of two (exact) and tried again.
+_RANGE = (1e-100, 1e100)
 
 
 @lru_cache(maxsize=32)
@@ -112,34 +114,53 @@ def _rule(d: int, pieces: int = PIECES) -> tuple[np.ndarray, np.ndarray, float]:
     return G, W, reach
 
 
-def _norms(X: np.ndarray) -> np.ndarray:
-    """Euclidean norms along axis 1 (``dim`` 2 or 3) by ``hypot``: no overflow or underflow."""
-    v = np.hypot(X[:, 0], X[:, 1])
-    return np.hypot(v, X[:, 2]) if X.shape[1] == 3 else v
-
-
-def _fixed_grid(arr: np.ndarray, pieces: int) -> tuple[np.ndarray, np.ndarray]:
-    """Fine-rule lengths of segments ``arr`` (``(S, d + 1, dim)``, ``d >= 2``) on ``pieces``
-    and ``2 * pieces`` subintervals, and which of them the two conditions certify."""
-    d = arr.shape[1] - 1
+def _fixed_grid(H: np.ndarray, pieces: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Fine-rule lengths of the segments with control-point differences ``H`` (``(S, d,
+    dim)``, ``d >= 2``) on ``pieces`` and ``2 * pieces`` subintervals, which of them the
+    certificate accepts, and which lie in the safe range (plain sums of squares: no
+    overflow or underflow can spoil them; see ``_RANGE``)."""
+    d = H.shape[1]
     G, W, reach = _rule(d, pieces)
     m = W.shape[0] - d + 1
     with np.errstate(over="ignore", invalid="ignore"):
-        H = arr[:, 1:] - arr[:, :-1]
-        v = _norms(np.matmul(H.transpose(0, 2, 1), G))  # (S, m + d - 1)
+        X = np.matmul(H.transpose(0, 2, 1), G)  # (S, dim, m + d - 1)
+        v = np.sqrt(np.einsum("sdm,sdm->sm", X, X))
         coarse, fine, bound = (v @ W).T
-        ok = (np.abs(fine - coarse) <= RTOL * fine) & (fine > _RANGE[0]) & (fine < _RANGE[1])
+        in_range = (fine > _RANGE[0]) & (fine < _RANGE[1])
+        ok = in_range & (np.abs(fine - coarse) <= RTOL * fine)
         ok &= v[:, :m].min(axis=1) >= SEPARATION * reach * bound
-    return fine, ok
+    return fine, ok, in_range
 
 
-def _finish(arr: np.ndarray, out: np.ndarray, ok: np.ndarray) -> np.ndarray:
-    """Complete ``out`` where ``ok`` is False: the finer grid, then the robust path."""
+def _scaled_differences(arr: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Control-point differences of each segment scaled by a power of two (exact) to a
+    largest entry in ``[0.5, 1)``, and the exponents that undo it (no overflow even for
+    coordinates near the float maximum: the points are scaled first)."""
+    big = np.abs(arr).max(axis=(1, 2))
+    e1 = np.frexp(np.where(big > 0, big, 1.0))[1]
+    H = np.diff(np.ldexp(arr, -e1[:, None, None]), axis=1)
+    small = np.abs(H).max(axis=(1, 2))
+    e2 = np.frexp(np.where(small > 0, small, 1.0))[1]
+    return np.ldexp(H, -e2[:, None, None]), e1 + e2
+
+
+def _finish(arr: np.ndarray, out: np.ndarray, ok: np.ndarray, in_range: np.ndarray) -> np.ndarray:
+    """Complete ``out`` where ``ok`` is False: the segments out of range again after
+    scaling, then the finer grid, then the robust path."""
     out = np.where(ok, out, 0.0)
     bad = np.flatnonzero(~ok)
     if arr.shape[1] > 2:
-        fine, ok2 = _fixed_grid(arr[bad], FINER_PIECES)
-        out[bad[ok2]] = fine[ok2]
+        H, e = _scaled_differences(arr[bad])
+        again = ~in_range[bad]
+        if again.any():
+            fine, ok1, _ = _fixed_grid(H[again], PIECES)
+            idx = np.flatnonzero(again)[ok1]
+            out[bad[idx]] = np.ldexp(fine[ok1], e[idx])
+            keep = np.ones(bad.size, dtype=bool)
+            keep[idx] = False
+            bad, H, e = bad[keep], H[keep], e[keep]
+        fine, ok2, _ = _fixed_grid(H, FINER_PIECES)
+        out[bad[ok2]] = np.ldexp(fine[ok2], e[ok2])
         bad = bad[~ok2]
     for i in bad:
         out[i] = robust_length(arr[i])
@@ -154,9 +175,12 @@ def segment_lengths(arr: np.ndarray) -> np.ndarray:
     """
     S, n, _ = arr.shape
     if n < 3:  # a point or a line: the length is the distance of the ends
-        return np.zeros(S) if n < 2 else _finish(arr, np.zeros(S), np.zeros(S, dtype=bool))
-    out, ok = _fixed_grid(arr, PIECES)
-    return out if ok.all() else _finish(arr, out, ok)
+        none = np.zeros(S, dtype=bool)
+        return np.zeros(S) if n < 2 else _finish(arr, np.zeros(S), none, none)
+    with np.errstate(over="ignore", invalid="ignore"):
+        H = arr[:, 1:] - arr[:, :-1]
+    out, ok, in_range = _fixed_grid(H, PIECES)
+    return out if ok.all() else _finish(arr, out, ok, in_range)
 
 
 def segment_length(P: np.ndarray) -> float:
@@ -166,19 +190,22 @@ def segment_length(P: np.ndarray) -> float:
     d = P.shape[0] - 1
     G, W, reach = _rule(d)
     with np.errstate(over="ignore", invalid="ignore"):
-        v = _norms_1((P[1:] - P[:-1]).T @ G)
+        X = (P[1:] - P[:-1]).T @ G
+        v = np.sqrt(np.einsum("dm,dm->m", X, X))
         coarse, fine, bound = (v @ W).tolist()
+        in_range = _RANGE[0] < fine < _RANGE[1]
         certified = (
-            abs(fine - coarse) <= RTOL * fine
-            and _RANGE[0] < fine < _RANGE[1]
+            in_range
+            and abs(fine - coarse) <= RTOL * fine
             and float(v[: 1 - d].min()) >= SEPARATION * reach * bound
         )
     if certified:
         return fine
-    return float(_finish(P[None], np.zeros(1), np.zeros(1, dtype=bool))[0])
+    return float(_finish(P[None], np.zeros(1), np.zeros(1, dtype=bool), np.array([in_range]))[0])
 
 
 def _norms_1(X: np.ndarray) -> np.ndarray:
+    """Euclidean norms of the columns of ``X`` (``dim`` 2 or 3 rows) by ``hypot``."""
     v = np.hypot(X[0], X[1])
     return np.hypot(v, X[2]) if X.shape[0] == 3 else v
 

@@ -149,8 +149,9 @@ def test_two_agreeing_rules_are_not_enough():
         assert abs(fine - coarse) <= bl.RTOL * fine
         assert abs(fine - exact) > 1e-12 * exact
         assert v[:-2].min() < bl.SEPARATION * reach * bound
-    fine, ok = bl._fixed_grid(P[None], bl.PIECES)
-    assert not ok[0]
+    for pieces in (bl.PIECES, bl.FINER_PIECES):
+        fine, ok, in_range = bl._fixed_grid(np.diff(P, axis=0)[None], pieces)
+        assert in_range[0] and not ok[0]
 
 
 def test_robust_path_alone_matches_mpmath():
