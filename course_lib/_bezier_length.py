@@ -22,15 +22,25 @@ many (*fine*) -- with one precomputed matrix.  A segment's fine value is accepte
    rules agree to 1e-16 on a speed dip narrower than the node spacing and are both
    wrong by up to 1e-11: ``tests/unit/test_arc_length_fast.py``.)
 
-**Robust path** (:func:`robust_length`), for every segment the fast path does not
-certify: the segment is scaled by powers of two (exact), split at the critical points
-of its speed in ``(0, 1)`` (the near-cusps sit at the ends of pieces, where bisection
-resolves them), and integrated by the adaptive Gauss-Legendre bisection of
-:mod:`course_lib.differential_geometry` on the same difference form.
+**Second stage**: the segments the first stage does not certify (out of the safe range
+after a power-of-two scaling, or with a strongly varying speed) are tried on a grid of
+:data:`FINER_PIECES` subintervals with the same certificate.
+
+**Robust path** (:func:`robust_length`), for every segment neither stage certifies: the
+segment is scaled by powers of two (exact), split at the critical points of its speed in
+``(0, 1)`` -- a near-cusp is a minimum of the speed, so it sits at the end of a piece --
+and each piece is integrated on a mesh graded geometrically towards its ends, down to a
+few times below the distance ``v / max|q''|`` of the speed's nearest complex zero; the
+mesh and the mesh halved must agree to :data:`RTOL`.  If they do not, adaptive
+Gauss-Legendre bisection (:func:`course_lib.differential_geometry._integrate_speed`, to
+:data:`ROBUST_RTOL`) on the same pieces decides.  On 400 random near-cusps
+(``eps`` from 1e-12 to 1e-1, anywhere in ``[0, 1]`` and just outside) the robust path is
+within 5e-16 of mpmath.
 """
 
 from __future__ import annotations
 
+import math
 from functools import lru_cache
 from math import comb
 
@@ -64,6 +74,8 @@ SEPARATION = 4.0
 #: level-to-level difference underestimates the error (1e-13 leaves up to 8e-13 on the
 #: near-cusps of ``tests/unit/test_arc_length_fast.py``); 1e-15 leaves about 2e-16.
 ROBUST_RTOL = 1e-15
+# Most halvings of the graded mesh towards one end of a piece (2^-60 ~ 1e-18).
+_MAX_LEVELS = 60
 # The fast path sums plain squares: a length in this range proves that no square
 # overflowed (|q'| <= C L for a polynomial, C far below 1e50) and that an underflow
 # changed no speed by more than 1e-154, relative 1e-54.  Other segments are scaled by
@@ -236,13 +248,17 @@ def _critical_points(H: np.ndarray) -> np.ndarray:
     C = _bernstein_to_power(k) @ H  # (k + 1, dim): q'(u) = sum_j C_j u^j
     der = C[1:] * np.arange(1, k + 1)[:, None]  # q''(u) = sum_j der_j u^j
     g = sum(np.convolve(C[:, c], der[:, c]) for c in range(H.shape[1]))  # degree 2k - 1
-    g = np.trim_zeros(g, "b")
-    if g.size < 2 or not np.all(np.isfinite(g)):
+    nz = np.flatnonzero(g)
+    if nz.size == 0 or nz[-1] == 0 or not np.all(np.isfinite(g)):
         return np.zeros(0)
-    r = np.polynomial.polynomial.polyroots(g)
+    g = g[: nz[-1] + 1]
+    n = g.size - 1  # roots: eigenvalues of the companion matrix of the monic polynomial
+    companion = np.diag(np.ones(n - 1), -1)
+    companion[:, -1] = -g[:-1] / g[-1]
+    r = np.linalg.eigvals(companion)
     tol = 1e-7 * max(1.0, float(np.abs(r).max()))
     real = r.real[(np.abs(r.imag) <= tol) & (r.real > 0.0) & (r.real < 1.0)]
-    return np.unique(real)
+    return np.sort(real)
 
 
 def robust_length(P: np.ndarray) -> float:
@@ -269,9 +285,61 @@ def robust_length(P: np.ndarray) -> float:
     if d == 1:
         return float(np.ldexp(float(_norms_1(H.T)[0]), e))
 
-    def speed(u: np.ndarray) -> np.ndarray:
-        return _norms_1((_bernstein(d - 1, u) @ H).T)
-
     grid = np.concatenate([[0.0], _critical_points(H), [1.0]])
-    total = float(_integrate_speed(None, grid[:-1], grid[1:], ROBUST_RTOL, speed).sum())
+    total = _graded(H, grid)
+    if total is None:
+
+        def speed(u: np.ndarray) -> np.ndarray:
+            return _norms_1((_bernstein(d - 1, u) @ H).T)
+
+        total = float(_integrate_speed(None, grid[:-1], grid[1:], ROBUST_RTOL, speed).sum())
     return float(np.ldexp(d * total, e))
+
+
+@lru_cache(maxsize=1)
+def _gauss_legendre() -> tuple[np.ndarray, np.ndarray]:
+    return np.polynomial.legendre.leggauss(ORDER)
+
+
+def _levels(width: float, v: float, M: float) -> int:
+    """Halvings of a piece of ``width`` towards an end where the speed is ``v`` and
+    ``|q''| <= M``: the speed cannot vanish within ``v / M`` of the end, so the nearest
+    singularity of the speed is about that far; grade down to a few times below it."""
+    if M <= 0.0 or v >= M * width:
+        return 2
+    if v <= 0.0:
+        return _MAX_LEVELS
+    return min(_MAX_LEVELS, max(2, math.ceil(math.log2(M * width / v)) + 4))
+
+
+def _graded(H: np.ndarray, grid: np.ndarray) -> float | None:
+    """``int_0^1 |sum_i B_i(u) H_i| du`` (``H`` scaled, largest entry in ``[0.5, 1)``) on a
+    mesh graded geometrically towards both ends of every piece ``[grid_j, grid_j+1]``
+    (the pieces end at the critical points of the speed, so a near-cusp sits at an end,
+    where the mesh resolves it down to a few times below the distance of the speed's
+    nearest complex zero); Gauss-Legendre on the mesh and on the mesh halved, in one
+    evaluation.  None when the two disagree by more than :data:`RTOL`."""
+    k = H.shape[0] - 1
+    speeds = np.sqrt(np.einsum("md,md->m", *(2 * [_bernstein(k, grid) @ H])))
+    M = k * float(np.sqrt(np.einsum("md,md->m", *(2 * [np.diff(H, axis=0)]))).sum()) if k else 0.0
+    edges = []
+    g, sp = grid.tolist(), speeds.tolist()
+    for a, b, va, vb in zip(g[:-1], g[1:], sp[:-1], sp[1:], strict=True):
+        w = b - a
+        left = a + w * 2.0 ** -np.arange(_levels(w, va, M), 1, -1)
+        right = b - w * 2.0 ** -np.arange(2, _levels(w, vb, M) + 1)
+        edges.append(np.concatenate([[a], left, [a + 0.5 * w], right]))
+    e = np.concatenate([*edges, [1.0]])
+    lo, hi = e[:-1], e[1:]
+    mid = 0.5 * (lo + hi)
+    A = np.concatenate([lo, lo, mid])
+    B = np.concatenate([hi, mid, hi])
+    x, wts = _gauss_legendre()
+    half = 0.5 * (B - A)
+    nodes = (0.5 * (A + B))[:, None] + half[:, None] * x
+    X = _bernstein(k, nodes.ravel()) @ H
+    v = np.sqrt(np.einsum("md,md->m", X, X)).reshape(nodes.shape)
+    vals = half * (v @ wts)
+    n = lo.size
+    coarse, fine = float(vals[:n].sum()), float(vals[n:].sum())
+    return fine if abs(fine - coarse) <= RTOL * fine else None
