@@ -55,6 +55,9 @@ __all__ = [
     "ROBUST_RTOL",
     "RTOL",
     "SEPARATION",
+    "hodograph_lengths",
+    "piece_lengths",
+    "robust_hodograph_length",
     "robust_length",
     "segment_lengths",
 ]
@@ -151,32 +154,62 @@ def _scaled_differences(arr: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     big = np.abs(arr).max(axis=(1, 2))
     e1 = np.frexp(np.where(big > 0, big, 1.0))[1]
     H = np.diff(np.ldexp(arr, -e1[:, None, None]), axis=1)
+    Hs, e2 = _scaled(H)
+    return Hs, e1 + e2
+
+
+def _scaled(H: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Finite hodographs ``H`` (``(S, d, dim)``) scaled by powers of two to a largest entry
+    in ``[0.5, 1)`` (zero stays zero), and the exponents that undo it."""
     small = np.abs(H).max(axis=(1, 2))
-    e2 = np.frexp(np.where(small > 0, small, 1.0))[1]
-    return np.ldexp(H, -e2[:, None, None]), e1 + e2
+    e = np.frexp(np.where(small > 0, small, 1.0))[1]
+    return np.ldexp(H, -e[:, None, None]), e
 
 
-def _finish(arr: np.ndarray, out: np.ndarray, ok: np.ndarray, in_range: np.ndarray) -> np.ndarray:
+def _finish(
+    H: np.ndarray,
+    out: np.ndarray,
+    ok: np.ndarray,
+    in_range: np.ndarray,
+    arr: np.ndarray | None = None,
+) -> np.ndarray:
     """Complete ``out`` where ``ok`` is False: the segments out of range again after
-    scaling, then the finer grid, then the robust path."""
+    scaling, then the finer grid, then the robust path.  ``arr`` (the control points)
+    is needed only where ``H`` overflowed."""
     out = np.where(ok, out, 0.0)
     bad = np.flatnonzero(~ok)
-    if arr.shape[1] > 2:
-        H, e = _scaled_differences(arr[bad])
-        again = ~in_range[bad]
-        if again.any():
-            fine, ok1, _ = _fixed_grid(H[again], PIECES)
-            idx = np.flatnonzero(again)[ok1]
-            out[bad[idx]] = np.ldexp(fine[ok1], e[idx])
-            keep = np.ones(bad.size, dtype=bool)
-            keep[idx] = False
-            bad, H, e = bad[keep], H[keep], e[keep]
-        fine, ok2, _ = _fixed_grid(H, FINER_PIECES)
-        out[bad[ok2]] = np.ldexp(fine[ok2], e[ok2])
-        bad = bad[~ok2]
-    for i in bad:
-        out[i] = robust_length(arr[i])
+    Hb = H[bad]
+    finite = np.isfinite(Hb).all(axis=(1, 2))
+    Hs, e = _scaled(np.where(finite[:, None, None], Hb, 0.0))
+    if not finite.all():
+        Hs[~finite], e[~finite] = _scaled_differences(arr[bad[~finite]])
+    if H.shape[1] == 1:  # lines: the length is the norm of the one difference
+        out[bad] = np.ldexp(_norms_1(Hs[:, 0].T), e)
+        return out
+    again = ~in_range[bad]
+    if again.any():
+        fine, ok1, _ = _fixed_grid(Hs[again], PIECES)
+        idx = np.flatnonzero(again)[ok1]
+        out[bad[idx]] = np.ldexp(fine[ok1], e[idx])
+        keep = np.ones(bad.size, dtype=bool)
+        keep[idx] = False
+        bad, Hs, e = bad[keep], Hs[keep], e[keep]
+    fine, ok2, _ = _fixed_grid(Hs, FINER_PIECES)
+    out[bad[ok2]] = np.ldexp(fine[ok2], e[ok2])
+    for i in np.flatnonzero(~ok2):
+        out[bad[i]] = np.ldexp(robust_hodograph_length(Hs[i]), e[i])
     return out
+
+
+def hodograph_lengths(H: np.ndarray, arr: np.ndarray | None = None) -> np.ndarray:
+    """Lengths ``int_0^1 |d sum_i B^{d-1}_i(u) H_i| du`` of Bézier segments given by their
+    control-point differences ``H`` (``(S, d, dim)``, ``d >= 1``); ``arr``, the points,
+    only if ``H`` may have overflowed."""
+    if H.shape[1] == 1:
+        none = np.zeros(H.shape[0], dtype=bool)
+        return _finish(H, np.zeros(H.shape[0]), none, none, arr)
+    out, ok, in_range = _fixed_grid(H, PIECES)
+    return out if ok.all() else _finish(H, out, ok, in_range, arr)
 
 
 def segment_lengths(arr: np.ndarray) -> np.ndarray:
@@ -185,14 +218,38 @@ def segment_lengths(arr: np.ndarray) -> np.ndarray:
     ``arr`` must be finite (a :class:`~course_lib.curve.PiecewiseBezier` guarantees it);
     no other checks.  Relative accuracy about 1e-13 or better (see the module notes).
     """
-    S, n, _ = arr.shape
-    if n < 3:  # a point or a line: the length is the distance of the ends
-        none = np.zeros(S, dtype=bool)
-        return np.zeros(S) if n < 2 else _finish(arr, np.zeros(S), none, none)
+    if arr.shape[1] < 2:  # a point
+        return np.zeros(arr.shape[0])
     with np.errstate(over="ignore", invalid="ignore"):
         H = arr[:, 1:] - arr[:, :-1]
-    out, ok, in_range = _fixed_grid(H, PIECES)
-    return out if ok.all() else _finish(arr, out, ok, in_range)
+    return hodograph_lengths(H, arr)
+
+
+def piece_lengths(arr: np.ndarray, u0: np.ndarray, u1: np.ndarray) -> np.ndarray:
+    """Lengths of the pieces ``u0_i <= u <= u1_i`` of Bézier segments ``arr[i]``
+    (``(n, d + 1, dim)``, one degree, ``0 <= u0 <= u1 <= 1``).
+
+    The piece is a Bézier curve whose control-point differences are ``(u1 - u0)`` times
+    the blossom of the hodograph at ``(u0, ..., u0, u1, ..., u1)`` (de Casteljau on the
+    differences, never on the points: nothing is lost to the curve's distance from the
+    origin).  A whole segment (``u0 = 0``, ``u1 = 1``) gets its differences exactly, so
+    its length is bit for bit the one :func:`segment_lengths` gives.
+    """
+    n, p, _ = arr.shape
+    if p < 2:
+        return np.zeros(n)
+    H, e = _scaled_differences(arr)
+    k = p - 2  # degree of the hodograph
+    a, b = u0[:, None, None], u1[:, None, None]
+    R = np.empty_like(H)
+    for j in range(k + 1):  # j arguments u1, k - j arguments u0
+        B = H
+        for step in range(k):
+            t = b if step < j else a
+            B = (1.0 - t) * B[:, :-1] + t * B[:, 1:]
+        R[:, j] = B[:, 0]
+    R *= (u1 - u0)[:, None, None]
+    return np.ldexp(hodograph_lengths(R), e)
 
 
 def segment_length(P: np.ndarray) -> float:
@@ -218,7 +275,8 @@ def segment_length(P: np.ndarray) -> float:
         and v[: 1 - d].min() >= SEPARATION * reach * bound
     ):
         return fine
-    return float(_finish(P[None], np.zeros(1), np.zeros(1, dtype=bool), np.array([in_range]))[0])
+    H = (P[1:] - P[:-1])[None]
+    return float(_finish(H, np.zeros(1), np.zeros(1, dtype=bool), np.array([in_range]), P[None])[0])
 
 
 def _norms_1(X: np.ndarray) -> np.ndarray:
@@ -262,29 +320,29 @@ def _critical_points(H: np.ndarray) -> np.ndarray:
 
 
 def robust_length(P: np.ndarray) -> float:
-    """Length of one Bézier segment ``P`` (``(d + 1, dim)``, finite, any degree and scale).
+    """Length of one Bézier segment ``P`` (``(d + 1, dim)``, finite, any degree and scale)
+    by the robust path alone (see :func:`robust_hodograph_length`)."""
+    if P.shape[0] < 2:
+        return 0.0
+    H, e = _scaled_differences(P[None])
+    if H.shape[1] == 1:
+        return float(np.ldexp(_norms_1(H[0, 0][:, None])[0], e[0]))
+    return float(np.ldexp(robust_hodograph_length(H[0]), e[0]))
 
-    Scaled by powers of two (exact) so that no product overflows or underflows, split at
-    the critical points of the speed, then adaptive Gauss-Legendre bisection to :data:`ROBUST_RTOL`.
+
+def robust_hodograph_length(H: np.ndarray) -> float:
+    """``int_0^1 |d sum_i B^{d-1}_i(u) H_i| du`` for one segment's control-point
+    differences ``H`` (``(d, dim)``, ``d >= 2``, scaled: largest entry in ``[0.5, 1)``).
+
+    Split at the critical points of the speed, then the graded mesh of :func:`_graded`,
+    and adaptive Gauss-Legendre bisection to :data:`ROBUST_RTOL` where that mesh is not
+    certified.
     """
     from .differential_geometry import _integrate_speed
 
-    d = P.shape[0] - 1
-    if d == 0:
+    d = H.shape[0]
+    if not np.any(H):
         return 0.0
-    big = float(np.abs(P).max())
-    if big == 0.0:
-        return 0.0
-    P = np.ldexp(P, -np.frexp(big)[1])  # entries in [-1, 1): differences cannot overflow
-    H = P[1:] - P[:-1]
-    small = float(np.abs(H).max())
-    if small == 0.0:
-        return 0.0
-    e = np.frexp(big)[1] + np.frexp(small)[1]
-    H = np.ldexp(H, -np.frexp(small)[1])  # largest entry in [0.5, 1)
-    if d == 1:
-        return float(np.ldexp(float(_norms_1(H.T)[0]), e))
-
     grid = np.concatenate([[0.0], _critical_points(H), [1.0]])
     total = _graded(H, grid)
     if total is None:
@@ -293,7 +351,7 @@ def robust_length(P: np.ndarray) -> float:
             return _norms_1((_bernstein(d - 1, u) @ H).T)
 
         total = float(_integrate_speed(None, grid[:-1], grid[1:], ROBUST_RTOL, speed).sum())
-    return float(np.ldexp(d * total, e))
+    return d * total
 
 
 @lru_cache(maxsize=1)

@@ -32,7 +32,7 @@ from typing import NamedTuple
 import numpy as np
 
 from ._bell import bell_row, check_chain_rule_order
-from ._bezier_length import segment_length, segment_lengths
+from ._bezier_length import piece_lengths, segment_length, segment_lengths
 from ._validation import (
     as_parameter_array,
     as_real_array,
@@ -170,9 +170,18 @@ def _integrate_speed(
     its two halves agree to ``rtol`` (relative; the finer value is kept) -- for the
     smooth speeds of polynomial and analytic curves after zero or one bisection.
     ``speed`` (optional) replaces ``|c'|``, as in :func:`_gl`.
+
+    For a uniform-degree :class:`~course_lib.curve.PiecewiseBezier` and intervals that
+    each lie in one segment (the callers split at the knots), every interval is a Bézier
+    piece measured by :func:`course_lib._bezier_length.piece_lengths` instead: the same
+    certified rules as :func:`arc_length`, accurate near cusps too.
     """
     a = np.asarray(a, dtype=float)
     b = np.asarray(b, dtype=float)
+    if speed is None and type(curve) is PiecewiseBezier and a.size:
+        pieces = _bezier_pieces(curve, a, b)
+        if pieces is not None:
+            return pieces
     total = np.zeros(a.size)
     if a.size == 0:
         return total
@@ -203,6 +212,25 @@ def _integrate_speed(
         whole = np.concatenate([left[bad], right[bad]])
         owner = np.concatenate([owner[bad], owner[bad]])
     return total
+
+
+def _bezier_pieces(curve: PiecewiseBezier, a: np.ndarray, b: np.ndarray) -> np.ndarray | None:
+    """Lengths of ``curve`` on ``[a_i, b_i]`` as Bézier pieces, or None unless the degree is
+    uniform and each interval lies in one segment."""
+    arr = curve._array
+    if arr is None:
+        return None
+    k = curve.knots
+    last = k.size - 2
+    seg = np.clip(np.searchsorted(k, a, side="right") - 1, 0, last)
+    if np.any(np.clip(np.searchsorted(k, b, side="left") - 1, 0, last) > seg):
+        return None
+    h = k[seg + 1] - k[seg]
+    u0 = np.clip((a - k[seg]) / h, 0.0, 1.0)
+    u1 = np.clip((b - k[seg]) / h, 0.0, 1.0)
+    u0[a <= k[seg]] = 0.0  # exact ends: a whole segment is measured exactly as arc_length does
+    u1[b >= k[seg + 1]] = 1.0
+    return piece_lengths(arr[seg], u0, u1)
 
 
 # --------------------------------------------------------------- first order
