@@ -171,8 +171,8 @@ def _integrate_speed(
     smooth speeds of polynomial and analytic curves after zero or one bisection.
     ``speed`` (optional) replaces ``|c'|``, as in :func:`_gl`.
 
-    For a uniform-degree :class:`~course_lib.curve.PiecewiseBezier` and intervals that
-    each lie in one segment (the callers split at the knots), every interval is a Bézier
+    For a :class:`~course_lib.curve.PiecewiseBezier` and intervals that each lie in one
+    segment (the callers split at the knots), every interval is a Bézier
     piece measured by :func:`course_lib._bezier_length.piece_lengths` instead: the same
     certified rules as :func:`arc_length`, accurate near cusps too.
     """
@@ -215,11 +215,8 @@ def _integrate_speed(
 
 
 def _bezier_pieces(curve: PiecewiseBezier, a: np.ndarray, b: np.ndarray) -> np.ndarray | None:
-    """Lengths of ``curve`` on ``[a_i, b_i]`` as Bézier pieces, or None unless the degree is
-    uniform and each interval lies in one segment."""
-    arr = curve._array
-    if arr is None:
-        return None
+    """Lengths of ``curve`` on ``[a_i, b_i]`` as Bézier pieces, or None unless each interval
+    lies in one segment."""
     k = curve.knots
     last = k.size - 2
     seg = np.clip(np.searchsorted(k, a, side="right") - 1, 0, last)
@@ -230,7 +227,15 @@ def _bezier_pieces(curve: PiecewiseBezier, a: np.ndarray, b: np.ndarray) -> np.n
     u1 = np.clip((b - k[seg]) / h, 0.0, 1.0)
     u0[a <= k[seg]] = 0.0  # exact ends: a whole segment is measured exactly as arc_length does
     u1[b >= k[seg + 1]] = 1.0
-    return piece_lengths(arr[seg], u0, u1)
+    if curve._array is not None:
+        return piece_lengths(curve._array[seg], u0, u1)
+    degrees = np.array(curve.degrees)[seg]
+    out = np.empty(a.size)
+    for d in np.unique(degrees):  # one vectorized call per degree present
+        m = degrees == d
+        P = np.stack([curve.segments[i] for i in seg[m].tolist()])
+        out[m] = piece_lengths(P, u0[m], u1[m])
+    return out
 
 
 # --------------------------------------------------------------- first order

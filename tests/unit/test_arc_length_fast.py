@@ -194,6 +194,10 @@ def test_spline_lengths_are_the_sum_of_the_segments_and_match_the_general_path(r
     )
     expected = reference_length(CUBIC) + reference_length(HARD["exact cusp at 1/2"]) + np.sqrt(2.0)
     assert arc_length(mixed) == pytest.approx(expected, rel=1e-13)
+    s = cumulative_arc_length(mixed, np.array([0.5, 1.0, 1.5, 2.0, 2.5, 3.0]))
+    assert s[-1] == pytest.approx(expected, rel=1e-15)
+    half_cusp = reference_length(HARD["exact cusp at 1/2"], hi=0.5)
+    assert s[2] - s[1] == pytest.approx(half_cusp, rel=1e-14)
 
 
 @pytest.mark.parametrize("name", ["benchmark cubic", *HARD])
