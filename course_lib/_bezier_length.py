@@ -50,6 +50,7 @@ from .bezier import _bernstein
 
 __all__ = [
     "FINER_PIECES",
+    "GRADED_ORDER",
     "ORDER",
     "PIECES",
     "ROBUST_RTOL",
@@ -77,6 +78,9 @@ SEPARATION = 4.0
 #: level-to-level difference underestimates the error (1e-13 leaves up to 8e-13 on the
 #: near-cusps of ``tests/unit/test_arc_length_fast.py``); 1e-15 leaves about 2e-16.
 ROBUST_RTOL = 1e-15
+#: Gauss-Legendre nodes per subinterval of the robust path's graded mesh (on it every
+#: singularity of the speed is at least about one subinterval away: ``rho >= 5.8``).
+GRADED_ORDER = 10
 # Most halvings of the graded mesh towards one end of a piece (2^-60 ~ 1e-18).
 _MAX_LEVELS = 60
 # The fast path sums plain squares: a length in this range proves that no square
@@ -356,7 +360,7 @@ def robust_hodograph_length(H: np.ndarray) -> float:
 
 @lru_cache(maxsize=1)
 def _gauss_legendre() -> tuple[np.ndarray, np.ndarray]:
-    return np.polynomial.legendre.leggauss(ORDER)
+    return np.polynomial.legendre.leggauss(GRADED_ORDER)
 
 
 def _levels(width: float, v: float, M: float) -> int:
