@@ -107,6 +107,41 @@ def median_time(fn: Callable[[], object], repeats: int, warmup: int = 1) -> floa
     return float(np.median(times))
 
 
+def paired_medians(
+    fns: list[Callable[[], object]], repeats: int, number: int = 1, warmup: int = 1
+) -> list[float]:
+    """Median time (s per call, by :data:`CLOCK`) of each of ``fns``, their samples taken
+    in turn (``a b a b ...``) so that a change of load on a shared machine hits all of
+    them alike; each sample times ``number`` consecutive calls (for calls of a few µs).
+    """
+    for fn in fns:
+        for _ in range(warmup):
+            fn()
+    samples: list[list[float]] = [[] for _ in fns]
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        for _ in range(max(1, repeats)):
+            for fn, out in zip(fns, samples, strict=True):
+                t0 = CLOCK()
+                for _ in range(number):
+                    fn()
+                out.append((CLOCK() - t0) / number)
+    finally:
+        if enabled:
+            gc.enable()
+    return [float(np.median(s)) for s in samples]
+
+
+def optional_module(name: str):
+    """The module ``name`` if it imports, else None (a benchmark-only reference that is
+    not installed is skipped with a note, never a crash)."""
+    try:
+        return __import__(name)
+    except Exception:
+        return None
+
+
 def fmt_time(seconds: float | None) -> str:
     """Human-readable duration: µs, ms or s with three significant digits."""
     if seconds is None:
@@ -152,7 +187,7 @@ def render_table(results: list[Result]) -> str:
 
 def _versions() -> dict[str, str]:
     out = {"python": platform.python_version()}
-    for mod in ("numpy", "scipy", "sympy", "geomdl", "matplotlib"):
+    for mod in ("numpy", "scipy", "sympy", "geomdl", "bezier", "matplotlib"):
         try:
             m = __import__(mod)
             out[mod] = getattr(m, "__version__", "?")

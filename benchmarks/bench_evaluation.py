@@ -13,12 +13,27 @@ Compared: ``PiecewiseBezier.evaluate(t, n)`` vs scipy's ``BSpline(t, nu=n)``
 (compiled de Boor) on ``Sizes.n_params`` sorted parameters; geomdl (pure Python) and
 a per-point loop of scalar ``PiecewiseBezier.evaluate`` calls on
 ``Sizes.n_params_slow`` parameters, their time scaled per point to ``n_params``.
+
+Issue 14's goals for one cubic Bézier segment (:func:`single_cubic_rows`): at
+``Sizes.n_params`` (10^6) points no slower than the ``bezier`` package's compiled
+``Curve.evaluate_multi`` (Fortran), and at 10^3 points -- where a fixed per-call cost
+shows -- no slower than scipy's ``BSpline`` (the cubic with knots 0,0,0,0,1,1,1,1).
+The three are checked to agree to 1e-12 first; the calls are timed in alternation.
+``bezier`` is a benchmark-only reference: when it is not installed its row carries a
+note instead of times.
 """
 
 from __future__ import annotations
 
 import numpy as np
-from bench_common import Result, Sizes, median_time
+from bench_common import (
+    Result,
+    Sizes,
+    fmt_time,
+    median_time,
+    optional_module,
+    paired_medians,
+)
 
 N_SEGMENTS = 50
 AGREEMENT = 1e-12  # required agreement of course_lib and scipy (and geomdl)
@@ -73,6 +88,59 @@ def _geomdl_eval(g, t: np.ndarray, n: int) -> np.ndarray:
 
 def _per_point(curve, t: np.ndarray, n: int) -> np.ndarray:
     return np.array([curve.evaluate(float(x), n) for x in t])
+
+
+# the cubic of item 2 (an inflection, speed varying ~9x)
+CUBIC = np.array([[0.0, 0.0], [0.25, 2.0], [3.0, -1.5], [4.0, 1.0]])
+FEW = 10**3  # "a fixed per-call cost" size
+
+
+def single_cubic_rows(sizes: Sizes) -> list[Result]:
+    """One cubic Bézier: course_lib vs bezier's evaluate_multi (many points) and vs scipy's
+    BSpline (10^3 points)."""
+    from scipy.interpolate import BSpline
+
+    from course_lib import PiecewiseBezier
+
+    curve = PiecewiseBezier([CUBIC])
+    spline = BSpline(np.array([0.0] * 4 + [1.0] * 4), CUBIC, 3)
+    bezier = optional_module("bezier")
+    ref_curve = None if bezier is None else bezier.Curve(np.asfortranarray(CUBIC.T), degree=3)
+    rows: list[Result] = []
+    for m in (sizes.n_params, FEW):
+        s = np.linspace(0.0, 1.0, m)
+        ours = curve.evaluate(s)
+        err = float(np.abs(ours - spline(s)).max())
+        if ref_curve is not None:
+            err = max(err, float(np.abs(ours - ref_curve.evaluate_multi(s).T).max()))
+        if not err <= AGREEMENT:
+            raise AssertionError(f"course_lib, scipy and bezier disagree: {err:.3g} > 1e-12")
+        number = max(1, 2 * 10**5 // m) if sizes.name != "tiny" else 1
+        repeats = max(5, sizes.repeats)
+        fns = [lambda s=s: curve.evaluate(s), lambda s=s: spline(s)]
+        if ref_curve is not None:
+            fns.append(lambda s=s: ref_curve.evaluate_multi(s))
+        times = paired_medians(fns, repeats, number)
+        note = f"one cubic segment; all agree to {err:.1e}; samples of {number} calls, alternated"
+        if m == FEW:
+            r = Result("1", f"points of one cubic, {m:.0e} params", times[0], "scipy BSpline",
+                       times[1], "≤ 1", times[0] <= times[1], note)
+            rows.append(r)
+        if ref_curve is None:
+            rows.append(
+                Result("1", f"points of one cubic, {m:.0e} params, vs bezier",
+                       note="bezier (dhermes' bezier, compiled) not installed: reference skipped")
+            )
+            continue
+        goal = "≤ 1" if m >= 10**6 else ""  # the goal is set at 10^6 points (full run)
+        r = Result(
+            "1", f"points of one cubic, {m:.0e} params", times[0],
+            f"bezier {bezier.__version__} evaluate_multi", times[2], goal,
+            times[0] <= times[2] if goal else None,
+            f"{note}; scipy BSpline {fmt_time(times[1])}" if m != FEW else note,
+        )
+        rows.append(r)
+    return rows
 
 
 def run(sizes: Sizes) -> list[Result]:
@@ -141,4 +209,4 @@ def run(sizes: Sizes) -> list[Result]:
     )
     r.met = r.ratio <= 1.5
     results.append(r)
-    return results
+    return results + single_cubic_rows(sizes)

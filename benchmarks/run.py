@@ -11,8 +11,10 @@ Items (each a median over repeats, with a ratio ``course_lib / reference`` where
 reference is measured in the same run):
 
 1. evaluation of points and 1st/2nd derivatives of a 50-segment cubic spline at
-   10^6 parameters: course_lib vs scipy's BSpline, geomdl, a per-point loop;
-2. arc length to 1e-12: course_lib vs scipy.integrate.quad, errors vs mpmath;
+   10^6 parameters: course_lib vs scipy's BSpline, geomdl, a per-point loop; one cubic
+   at 10^6 points vs the ``bezier`` package (compiled) and at 10^3 vs scipy;
+2. arc length to 1e-12: course_lib vs scipy.integrate.quad and the ``bezier`` package's
+   ``Curve.length``, errors vs mpmath (``bezier`` is optional: rows say when it is missing);
 3. symbolic Beta-constraints n = 1..8 (cold caches) vs sympy's Bell polynomials;
 4. widget update latency (compute + Agg redraw), from ``widget_latency.py``;
 5. ``import course_lib`` time vs ``import numpy`` and the heavy-package check;

@@ -51,24 +51,33 @@ def _horner_chunk(t: np.ndarray, table: np.ndarray, halves: tuple, out: np.ndarr
     """Evaluate the two-sided Taylor form at in-domain parameters ``t`` into ``out``."""
     bp, anchor, hh, unit = halves
     last = anchor.size - 1
+    # j is within [0, last] by construction: mode="clip" skips take()'s bounds checks.
     if unit:
         # Knots 0, 1, ..., S and t >= 0: the half-segment index is floor(2 t), exactly,
         # and t - anchor is exact (Sterbenz), so no search and no division.
         j = (t * 2.0).astype(np.intp)
         np.minimum(j, last, out=j)
-        w = t - anchor.take(j)
+        w = t - anchor.take(j, mode="clip")
     else:
         j = np.searchsorted(bp, t, side="right")
         j -= 1
         np.clip(j, 0, last, out=j)
-        w = t - anchor.take(j)
-        w /= hh.take(j)
+        w = t - anchor.take(j, mode="clip")
+        w /= hh.take(j, mode="clip")
+    # One coordinate at a time on contiguous 1-d arrays (the table is laid out
+    # (level, coordinate, half) for that): an (m, dim) array times an (m, 1) column
+    # runs an inner loop of length dim and costs several times more.
     top = table.shape[0] - 1
-    np.take(table[top], j, axis=0, out=out)
-    w = w[:, None]
-    for k in range(top - 1, -1, -1):
-        out *= w
-        out += table[k].take(j, axis=0)
+    for c in range(table.shape[1]):
+        acc = table[top, c].take(j, mode="clip")
+        if top == 0:
+            out[:, c] = acc
+            continue
+        for k in range(top - 1, 0, -1):
+            acc *= w
+            acc += table[k, c].take(j, mode="clip")
+        acc *= w
+        np.add(acc, table[0, c].take(j, mode="clip"), out=out[:, c])
 
 
 @lru_cache(maxsize=64)
@@ -448,6 +457,31 @@ class PiecewiseBezier:
             raise ValueError(f"t must lie in the domain [{k[0]}, {k[-1]}]; got {bad}")
         return True
 
+    def _parameters(self, t: object) -> tuple[np.ndarray, bool, bool]:
+        """``t`` checked as :func:`~course_lib._validation.as_parameter_array` and
+        :meth:`_check_domain` do, with the same errors, in two passes over the array when
+        all is well: ``t_0 <= min(t)`` and ``max(t) <= t_S`` also prove every ``t`` finite
+        (a NaN makes the minimum NaN, an infinity lies outside the domain).
+
+        Returns
+        -------
+        tt : 1-d float array
+        scalar : bool
+            ``t`` was a scalar.
+        clip : bool
+            Some ``t`` lie just outside the domain (within the rounding tolerance).
+        """
+        arr = as_real_array(t, "t", "a real number or an array of them")
+        if arr.ndim > 1:
+            raise ValueError(f"t must be a scalar or a 1-d array; got shape {arr.shape}")
+        scalar = arr.ndim == 0
+        tt = arr.reshape(1) if scalar else arr
+        if tt.size and self._knots[0] <= tt.min() and tt.max() <= self._knots[-1]:
+            return tt, scalar, False
+        if not np.isfinite(tt).all():
+            raise ValueError("t must contain only finite values")
+        return tt, scalar, self._check_domain(tt)
+
     def _locate(self, tt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         k = self._knots
         self._check_domain(tt)
@@ -476,7 +510,7 @@ class PiecewiseBezier:
         ndarray of shape (dim,) or (m, dim)
         """
         n = check_integer(n, "n", minimum=0)
-        tt, scalar = as_parameter_array(t, "t")
+        tt, scalar, clip = self._parameters(t)
         few = (
             self.n_segments >= _LAZY_MIN_SEGMENTS
             and tt.size < 4 * self.n_segments
@@ -492,7 +526,7 @@ class PiecewiseBezier:
         elif tt.size == 1:
             out = self._horner_one(float(tt[0]), n)[None, :]
         else:
-            if self._check_domain(tt):
+            if clip:
                 tt = np.clip(tt, self._knots[0], self._knots[-1])
             out = np.empty((tt.size, self.dim))
             halves = self._halves()
@@ -513,7 +547,8 @@ class PiecewiseBezier:
         the Taylor coefficients being the end derivatives of seed 000
         eq. (8.1)-(8.3) divided by ``k!``.  Row ``2 i`` (left) and ``2 i + 1``
         (right) of ``table[k]`` hold the coefficients of ``w^k`` times
-        ``h_i^{-n}`` (the chain rule), zero-padded to the largest degree.  As
+        ``h_i^{-n}`` (the chain rule), zero-padded to the largest degree (the table's
+        shape is ``(levels, dim, 2 S)``: level ``k``, coordinate, half-segment).  As
         ``|Δ^k Q| <= 2^k max|Q|`` and ``|w| <= 1/2``, the terms sum to at most
         ``2^e max|Q|`` in absolute value, so Horner's rule loses a small multiple of
         ``2^e`` ulps of ``max|Q|`` -- below 1e-13 relative up to ``e = 8``
@@ -534,20 +569,20 @@ class PiecewiseBezier:
         if self._array is not None:
             d = self._degrees[0]
             e = d - n
-            table = np.empty((top + 1, 2 * self.n_segments, self.dim))
+            table = np.empty((top + 1, self.dim, 2 * self.n_segments))
             if e < 0:
                 table[:] = 0.0
             else:
                 S, dim = self.n_segments, self.dim
-                A = self._array.transpose(1, 0, 2).reshape(d + 1, S * dim)
-                C = (_taylor_matrix(d, n) @ A).reshape(2 * (e + 1), S, dim)  # one GEMM
+                A = self._array.transpose(1, 2, 0).reshape(d + 1, dim * S)
+                C = (_taylor_matrix(d, n) @ A).reshape(2 * (e + 1), dim, S)  # one GEMM
                 if n:
-                    C *= scale[None, :, None]
-                table[: e + 1, 0::2] = C[: e + 1]
-                table[: e + 1, 1::2] = C[e + 1 :]
+                    C *= scale
+                table[: e + 1, :, 0::2] = C[: e + 1]
+                table[: e + 1, :, 1::2] = C[e + 1 :]
             table.setflags(write=False)
             return table
-        table = np.zeros((top + 1, 2 * self.n_segments, self.dim))
+        table = np.zeros((top + 1, self.dim, 2 * self.n_segments))
         groups: dict[int, list[int]] = {}
         for i, d in enumerate(self.degrees):
             groups.setdefault(d, []).append(i)
@@ -558,8 +593,8 @@ class PiecewiseBezier:
             idx = np.array(members)
             Q = np.stack([self._segments[i] for i in members])  # (G, d + 1, dim)
             C = np.matmul(_taylor_matrix(d, n), Q) * scale[idx][:, None, None]
-            table[: e + 1, 2 * idx] = C[:, : e + 1].transpose(1, 0, 2)
-            table[: e + 1, 2 * idx + 1] = C[:, e + 1 :].transpose(1, 0, 2)
+            table[: e + 1, :, 2 * idx] = C[:, : e + 1].transpose(1, 2, 0)
+            table[: e + 1, :, 2 * idx + 1] = C[:, e + 1 :].transpose(1, 2, 0)
         table.setflags(write=False)
         return table
 
@@ -569,7 +604,8 @@ class PiecewiseBezier:
         key = ("taylor-lists", n)
         if key not in self._cache:
             bp, anchor, hh, unit = self._halves()
-            rows = [[tuple(p) for p in level] for level in self._taylor(n).tolist()]
+            table = self._taylor(n).transpose(0, 2, 1)  # (level, half, coordinate)
+            rows = [[tuple(p) for p in level] for level in table.tolist()]
             self._cache[key] = (bp.tolist(), anchor.tolist(), hh.tolist(), unit, rows)
         bp, anchor, hh, unit, rows = self._cache[key]
         if not bp[0] <= x <= bp[-1]:
