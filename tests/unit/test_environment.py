@@ -53,9 +53,19 @@ def constraints() -> dict[str, str]:
     return out
 
 
+def _pip_pins(pip: list[str]) -> dict[str, str]:
+    """Packages environment.yml takes from PyPI (``name==version``), besides ``-e .``."""
+    pins = {}
+    for item in pip:
+        if "==" in item:
+            name, version = item.split("==", 1)
+            pins[_name(name)] = version.strip()
+    return pins
+
+
 def test_environment_yml_names_the_same_dependencies_as_pyproject():
     conda, pip = conda_requirements()
-    conda_names = set(conda) - {"python", "pip"}
+    conda_names = (set(conda) - {"python", "pip"}) | set(_pip_pins(pip))
     assert conda_names == set(pyproject_requirements()), (
         f"only in environment.yml: {sorted(conda_names - set(pyproject_requirements()))}; "
         f"only in pyproject.toml: {sorted(set(pyproject_requirements()) - conda_names)}"
@@ -64,7 +74,8 @@ def test_environment_yml_names_the_same_dependencies_as_pyproject():
 
 
 def test_pinned_versions_agree_with_constraints():
-    conda, _ = conda_requirements()
+    conda, pip = conda_requirements()
+    conda = {**conda, **_pip_pins(pip)}
     pins = constraints()
     assert set(pins) <= set(pyproject_requirements()), "constraints.txt pins a package nobody needs"
     for name, version in conda.items():
