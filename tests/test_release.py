@@ -96,6 +96,13 @@ def test_edition_holds_what_a_student_needs(edition):
             ".jupyter-course/lab/user-settings-defaults/@jupyterlab/apputils-extension/"
             "notification.jupyterlab-settings"} <= names
     assert "--config=.jupyter-course/jupyter_server_config.py" in (edition / "Makefile").read_text()
+    # its welcome page names only the edition's commands and links nothing it does not hold
+    welcome = (edition / "notebooks" / "00_welcome.ipynb").read_text(encoding="utf-8")
+    assert "make submit HW=hw01" in welcome and "make lab" in welcome
+    for absent in ("solutions/", "make test", "make present"):
+        assert absent not in welcome, absent
+    makefile = (edition / "Makefile").read_text()
+    assert all(f"\n{t}:" in makefile for t in ("lab", "submit"))
     assert {f"exercises/{p.name}" for p in (ROOT / "exercises").glob("*.ipynb")} <= names
     lectures = {f"notebooks/{p.name}" for p in (ROOT / "notebooks").glob("*.ipynb")}
     assert lectures <= names

@@ -123,6 +123,42 @@ def _student_pyproject(text: str) -> str:
     return "\n".join(lines).rstrip() + "\n"
 
 
+#: the welcome page as the edition has it: only the commands its Makefile has, no solutions link
+WELCOME = "notebooks/00_welcome.ipynb"
+WELCOME_EDITS = [
+    (
+        "| `make present L=04` | shows lecture 04 as slides for a projector: large text, live demos, "
+        "no code (any lecture number works) |\n",
+        "",
+    ),
+    (
+        "| `make test` | the same installation, then the whole test suite: the package's unit tests, "
+        "and every notebook of [`notebooks/`](./), [`exercises/`](../exercises/) and "
+        "[`solutions/`](../solutions/) executed from top to bottom |",
+        "| `make submit HW=hw01 STUDENT=your-id` | runs homework 1 top to bottom in a fresh kernel, "
+        "as the grader will, and writes `submissions/hw01-your-id.ipynb` for you to upload |",
+    ),
+    (
+        "The matching notebooks in [`solutions/`](../solutions/) hold worked solutions and are "
+        "meant for instructors.\n\n",
+        "",
+    ),
+]
+
+
+def _student_welcome(text: str) -> str:
+    """The welcome notebook without the instructors' commands and the solutions link."""
+    import nbformat
+
+    nb = nbformat.reads(text, as_version=4)
+    for old, new in WELCOME_EDITS:
+        cells = [c for c in nb.cells if old in c.source]
+        if len(cells) != 1:
+            raise SystemExit(f"{WELCOME}: the edition's edit no longer applies: {old[:60]!r}")
+        cells[0].source = cells[0].source.replace(old, new)
+    return nbformat.writes(nb) + "\n"
+
+
 def build(out: Path) -> Path:
     """Write the edition to ``out`` (replacing it) and ``out``.zip; return the zip's path."""
     if out.exists() and any(out.iterdir()):
@@ -137,6 +173,8 @@ def build(out: Path) -> Path:
         dst.parent.mkdir(parents=True, exist_ok=True)
         if rel.as_posix() == "pyproject.toml":
             dst.write_text(_student_pyproject(src.read_text(encoding="utf-8")), encoding="utf-8")
+        elif rel.as_posix() == WELCOME:
+            dst.write_text(_student_welcome(src.read_text(encoding="utf-8")), encoding="utf-8")
         else:
             shutil.copyfile(src, dst)
     (out / "README.md").write_text(STUDENT_README, encoding="utf-8")
