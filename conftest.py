@@ -68,16 +68,16 @@ def too_wide_figures(outputs, limit: int = MAX_FIGURE_WIDTH_PX) -> list[int]:
 
 @pytest.hookimpl(wrapper=True)
 def pytest_runtest_call(item):
-    """Under nbval, a lecture cell (notebooks/*.ipynb) fails when it shows a figure wider
-    than :data:`MAX_FIGURE_WIDTH_PX`.  Costs nothing extra: nbval keeps each cell's outputs
+    """Under nbval, a cell of a lecture or homework (notebooks/, exercises/, solutions/) fails
+    when it shows a figure wider than :data:`MAX_FIGURE_WIDTH_PX`.  Costs nothing extra: nbval keeps each cell's outputs
     (``item.test_outputs``) and only the PNG headers are read."""
     result = yield
     path = Path(str(getattr(item, "path", item.fspath)))
-    if path.suffix == ".ipynb" and path.parent.name == "notebooks":
+    if path.suffix == ".ipynb" and path.parent.name in {"notebooks", "exercises", "solutions"}:
         wide = too_wide_figures(getattr(item, "test_outputs", None))
         if wide:
             pytest.fail(
-                f"figure {wide[0]} px wide; a lecture figure may be at most "
+                f"figure {wide[0]} px wide; a figure of the course may be at most "
                 f"{MAX_FIGURE_WIDTH_PX} px (figsize width ≤ 8.8 in at the course's 100 dpi: "
                 "fewer inches or panels per row, never a lower dpi)",
                 pytrace=False,

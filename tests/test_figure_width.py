@@ -1,7 +1,7 @@
-"""Every static figure of a lecture fits the notebook column of a laptop (issue 13, "Figures").
+"""Every static figure of the course fits the notebook column of a laptop (issue 13, "Figures").
 
-The check itself lives in the repository's ``conftest.py``: under nbval, a cell of a lecture
-(``notebooks/*.ipynb``) fails when it shows a PNG wider than ``MAX_FIGURE_WIDTH_PX``; it reads
+The check itself lives in the repository's ``conftest.py``: under nbval, a cell of a lecture or
+homework (``notebooks/``, ``exercises/``, ``solutions/``) fails when it shows a PNG wider than ``MAX_FIGURE_WIDTH_PX``; it reads
 only the PNG headers of the outputs nbval already keeps, so the lectures' nbval runs enforce
 the limit at no extra cost.  These tests check that helper and, once, the whole chain.
 """
@@ -125,4 +125,4 @@ def test_nbval_fails_a_lecture_cell_with_a_wide_figure(tmp_path):
     out = run.stdout + run.stderr
     assert run.returncode == 1, out
     assert "2 passed" in out and "1 failed" in out, out
-    assert re.search(r"figure 1[0-9]{3} px wide; a lecture figure may be at most 900 px", out), out
+    assert re.search(r"figure 1[0-9]{3} px wide; a figure of the course may be at most 900 px", out), out

@@ -187,7 +187,7 @@ check("hw02.q6", answer_q6)
 # ## Question 7 — read a picture (multiple choice, feedback only: 0 points)
 #
 # The curve below has four cubic segments and three joints, lettered A, B, C in the order of your
-# data. Next to it, along the parameter and with one colour per segment: the direction angle of
+# data. Under it, along the parameter and with one colour per segment: the direction angle of
 # its unit tangent, and its signed curvature. **Which joint is $G^1$ but not $G^2$?** Answer with
 # one letter.
 
@@ -197,7 +197,9 @@ print(DATA["q7"]["text"])  # your data
 # %%
 segments_q7, labels_q7 = DATA["q7"]["segments"], DATA["q7"]["labels"]
 curve_q7 = PiecewiseBezier(segments_q7)
-fig, (ax_curve, ax_angle, ax_kappa) = plt.subplots(1, 3, figsize=(12, 3.2), layout="constrained")
+fig, axes = plt.subplot_mosaic([["curve", "curve"], ["angle", "kappa"]], figsize=(8.8, 4.6),
+                               layout="constrained", height_ratios=[0.8, 1])
+ax_curve, ax_angle, ax_kappa = axes["curve"], axes["angle"], axes["kappa"]
 uu = np.linspace(0.0, 1.0, 200)
 for i in range(curve_q7.n_segments):
     p, d1, d2 = (curve_q7.evaluate_segment(i, uu, n) for n in (0, 1, 2))
@@ -209,7 +211,7 @@ for i in range(curve_q7.n_segments):
 for name, (x, y) in zip(labels_q7, curve_q7.joint_points, strict=True):
     ax_curve.plot(x, y, "ko", ms=4)
     ax_curve.annotate(name, (x, y), xytext=(0, 8), textcoords="offset points", ha="center")
-for ax, title in ((ax_angle, "direction of the unit tangent (degrees)"), (ax_kappa, "signed curvature κ")):
+for ax, title in ((ax_angle, "tangent direction (degrees)"), (ax_kappa, "signed curvature κ")):
     ax.set_xticks(curve_q7.joint_parameters, list(labels_q7))
     ax.grid(axis="x", ls=":")
     ax.set_title(title)

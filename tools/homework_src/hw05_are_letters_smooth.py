@@ -260,7 +260,7 @@ assert np.allclose(np.sort(t_old.point[old], axis=0), np.sort(t_new.point[new], 
 check("hw05.q6", answer_q6)
 
 # %% solution
-fig, axes = plt.subplots(1, 2, figsize=(10, 5.4))
+fig, axes = plt.subplots(1, 2, figsize=(7.9, 4.6))
 for ax, outline in zip(axes, (glyph, glyph_g2), strict=True):
     plot_outline(ax, outline, comb_scale=0.01, teeth_per_segment=25, legend=(outline is glyph_g2))
     ax.set_title(f"{outline.name}: {glyph_summary(outline).g2} G2 points")
