@@ -13,6 +13,7 @@ import sys
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 from course_lib import variants
 
@@ -78,3 +79,22 @@ def differ(a, b) -> bool:
     if isinstance(a, dict):
         return any(differ(a[k], b[k]) for k in a)
     return not np.allclose(a, b)
+
+
+def default_data_afterwards(hw: str):
+    """An autouse fixture: after each test the checks of ``hw`` see the default data again."""
+
+    @pytest.fixture(autouse=True)
+    def _fixture():
+        yield
+        variants.data(hw, variants.DEFAULT)
+
+    return _fixture
+
+
+def far(a, b, rel: float = 1e-3) -> bool:
+    """Are two answers at least ``rel`` of the second's size apart (other shapes always are)?"""
+    a, b = np.atleast_1d(np.asarray(a, float)), np.atleast_1d(np.asarray(b, float))
+    if a.shape != b.shape:
+        return True
+    return float(np.linalg.norm(a - b)) > rel * max(1.0, float(np.linalg.norm(b)))

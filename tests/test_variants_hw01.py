@@ -23,7 +23,7 @@ from scipy.integrate import quad
 
 matplotlib.use("Agg")
 
-from _homework_support import VariantHomework
+from _homework_support import VariantHomework, default_data_afterwards, far
 
 from course_lib import variants
 from course_lib.checks import check, questions, registry
@@ -34,10 +34,7 @@ HIDDEN = HOME.hidden
 CODES = HOME.codes
 
 
-@pytest.fixture(autouse=True)
-def _default_afterwards():
-    yield
-    variants.data("hw01", variants.DEFAULT)  # the checks of other tests see the default data
+_default_afterwards = default_data_afterwards("hw01")  # checks elsewhere see the default data
 
 
 def _grade(q: str, namespace: dict, data: dict) -> tuple[float, str]:
@@ -86,9 +83,7 @@ def _sampled_min_slope(coef) -> float:  # independent of the hidden test's close
     )
 
 
-def _far(a, b, rel=1e-3) -> bool:
-    a, b = np.atleast_1d(np.asarray(a, float)), np.atleast_1d(np.asarray(b, float))
-    return float(np.linalg.norm(a - b)) > rel * max(1.0, float(np.linalg.norm(b)))
+_far = far
 
 
 def _mistakes(d: dict) -> dict[str, list]:

@@ -23,7 +23,7 @@ import sympy as sp
 
 matplotlib.use("Agg")
 
-from _homework_support import VariantHomework
+from _homework_support import VariantHomework, default_data_afterwards, far
 
 from course_lib import variants
 from course_lib.checks import check, questions, registry
@@ -38,10 +38,7 @@ CODES = HOME.codes
 DATA_QUESTIONS = ("q1", "q2", "q5", "q6", "q7")
 
 
-@pytest.fixture(autouse=True)
-def _default_afterwards():
-    yield
-    variants.data("hw02", variants.DEFAULT)  # the checks of other tests see the default data
+_default_afterwards = default_data_afterwards("hw02")  # checks elsewhere see the default data
 
 
 def _grade(q: str, namespace: dict, data: dict) -> tuple[float, str]:
@@ -87,9 +84,7 @@ def _det(a, b) -> float:
     return float(a[0] * b[1] - a[1] * b[0])
 
 
-def _far(a, b, rel=1e-3) -> bool:
-    a, b = np.atleast_1d(np.asarray(a, float)), np.atleast_1d(np.asarray(b, float))
-    return float(np.linalg.norm(a - b)) > rel * max(1.0, float(np.linalg.norm(b)))
+_far = far
 
 
 def _kinds(segments) -> list[str]:

@@ -20,7 +20,7 @@ import pytest
 
 matplotlib.use("Agg")
 
-from _homework_support import VariantHomework, differ
+from _homework_support import VariantHomework, default_data_afterwards, differ, far
 
 from course_lib import variants
 from course_lib.checks import check
@@ -32,10 +32,7 @@ CODES = HOME.codes
 DATA_QUESTIONS = ("q1", "q3", "q4", "q5")
 
 
-@pytest.fixture(autouse=True)
-def _default_afterwards():
-    yield
-    variants.data("hw03", variants.DEFAULT)  # the checks of other tests see the default data
+_default_afterwards = default_data_afterwards("hw03")  # checks elsewhere see the default data
 
 
 def _grade(q: str, namespace: dict, data: dict) -> tuple[float, str]:
@@ -67,9 +64,7 @@ def test_codes_are_validated_and_reproducible():
 
 
 # ------------------------------------------------------------------ 1,000 variants: well posed
-def _far(a, b, rel=1e-3) -> bool:
-    a, b = np.atleast_1d(np.asarray(a, float)), np.atleast_1d(np.asarray(b, float))
-    return float(np.linalg.norm(a - b)) > rel * max(1.0, float(np.linalg.norm(b)))
+_far = far
 
 
 def _mistakes(d: dict) -> dict[str, list]:

@@ -24,7 +24,7 @@ import pytest
 
 matplotlib.use("Agg")
 
-from _homework_support import VariantHomework, differ
+from _homework_support import VariantHomework, default_data_afterwards, differ, far
 
 from course_lib import variants
 from course_lib.checks import check
@@ -42,10 +42,7 @@ OLD_Q6 = {
 }
 
 
-@pytest.fixture(autouse=True)
-def _default_afterwards():
-    yield
-    variants.data("hw04", variants.DEFAULT)  # the checks of other tests see the default data
+_default_afterwards = default_data_afterwards("hw04")  # checks elsewhere see the default data
 
 
 def _grade(q: str, namespace: dict, data: dict) -> tuple[float, str]:
@@ -86,8 +83,7 @@ def test_codes_are_validated_and_reproducible():
 # ------------------------------------------------------------------ 1,000 variants: well posed
 def _far(a, b, rel=5e-3) -> bool:
     """At least 0.5 % of the answer's size apart (the checks and the grader tolerate 1e-9)."""
-    a, b = np.atleast_1d(_arr(a)), np.atleast_1d(_arr(b))
-    return float(np.linalg.norm(a - b)) > rel * max(1.0, float(np.linalg.norm(b)))
+    return far(a, b, rel)
 
 
 def _gamma(b1, b2, d=3):

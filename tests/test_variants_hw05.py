@@ -32,7 +32,7 @@ import pytest
 
 matplotlib.use("Agg")
 
-from _homework_support import VariantHomework
+from _homework_support import VariantHomework, default_data_afterwards, far
 
 from course_lib import PiecewiseBezier, variants
 from course_lib.beta_splines import cubic_beta_spline
@@ -47,10 +47,7 @@ DATA_QUESTIONS = ("q1", "q3", "q4", "q6")
 DEFAULT_Q3 = [[371.0, 950.0], [429.0, 1050.0], [606.0, 1147.0], [729.0, 1147.0]]
 
 
-@pytest.fixture(autouse=True)
-def _default_afterwards():
-    yield
-    variants.data("hw05", variants.DEFAULT)  # the checks of other tests see the default data
+_default_afterwards = default_data_afterwards("hw05")  # checks elsewhere see the default data
 
 
 def _data_for(glyph, q3: int, order=None) -> dict:
@@ -64,11 +61,7 @@ def _data_for(glyph, q3: int, order=None) -> dict:
         gen._params = original
 
 
-def _far(a, b, rel=1e-3) -> bool:
-    a, b = np.asarray(a, float), np.asarray(b, float)
-    return a.shape != b.shape or float(np.linalg.norm(a - b)) > rel * max(
-        1.0, float(np.linalg.norm(b))
-    )
+_far = far
 
 
 def _cross(u, w) -> float:
