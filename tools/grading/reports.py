@@ -191,10 +191,10 @@ def feedback_markdown(r, tests, late: LatePolicy | None = None) -> str:
         "|---|---|---|---|",
     ]
     for q in tests.points:
-        note = r.notes[q].replace("|", "\\|").replace("\n", " ") or "✓"
+        text = r.notes[q].replace("|", "\\|").replace("\n", " ")
+        note = text or "✓"
         if tests.points[q] == 0:  # multiple choice: a check can be tried letter by letter
-            wrong = "✗ " + (r.notes[q].replace("|", "\\|").replace("\n", " ") or "wrong answer")
-            note = "feedback only: " + ("✓ right" if r.right(q, 0) else wrong)
+            note = "feedback only: " + ("✓ right" if r.right(q, 0) else f"✗ {text or 'wrong answer'}")
         lines.append(f"| {q} | {r.points[q]:g} | {tests.points[q]:g} | {note} |")
     if late is not None:
         when = r.submitted or "unknown"
