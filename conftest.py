@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 
-#: Widest static figure of a lecture, in pixels as shown inline: the notebook column of
+#: Widest static figure of a lecture or homework, in pixels as shown inline: the notebook column of
 #: JupyterLab on a 1366×768 laptop screen with the file browser open is about 880–900 px;
 #: a wider PNG is scaled down and its text, drawn at the course style's sizes, becomes tiny.
 MAX_FIGURE_WIDTH_PX = 900
@@ -69,8 +69,8 @@ def too_wide_figures(outputs, limit: int = MAX_FIGURE_WIDTH_PX) -> list[int]:
 @pytest.hookimpl(wrapper=True)
 def pytest_runtest_call(item):
     """Under nbval, a cell of a lecture or homework (notebooks/, exercises/, solutions/) fails
-    when it shows a figure wider than :data:`MAX_FIGURE_WIDTH_PX`.  Costs nothing extra: nbval keeps each cell's outputs
-    (``item.test_outputs``) and only the PNG headers are read."""
+    when it shows a figure wider than :data:`MAX_FIGURE_WIDTH_PX`.  Costs nothing extra: nbval
+    keeps each cell's outputs (``item.test_outputs``) and only the PNG headers are read."""
     result = yield
     path = Path(str(getattr(item, "path", item.fspath)))
     if path.suffix == ".ipynb" and path.parent.name in {"notebooks", "exercises", "solutions"}:
