@@ -9,13 +9,11 @@ full marks, the borrowed code does not.
 from __future__ import annotations
 
 import csv
-import importlib.util
-import sys
 from pathlib import Path
 
 import nbformat
-import numpy as np
 import pytest
+from _homework_support import differ, load
 
 from course_lib import variants
 
@@ -44,17 +42,7 @@ FULL = {"hw01": 11, "hw02": 10, "hw03": 15, "hw04": 11, "hw05": 12}
 DIFFER = {"hw05": 1}
 
 
-def _differ(a, b) -> bool:
-    if isinstance(a, str):
-        return a != b
-    if isinstance(a, dict):
-        return any(_differ(a[k], b[k]) for k in a)
-    return not np.allclose(a, b)
-
-spec = importlib.util.spec_from_file_location("grade_variants", ROOT / "tools" / "grade.py")
-grade = importlib.util.module_from_spec(spec)
-sys.modules["grade_variants"] = grade
-spec.loader.exec_module(grade)
+grade = load("grade_variants", ROOT / "tools" / "grade.py")
 
 pytestmark = [pytest.mark.slow, pytest.mark.timeout(300)]
 
@@ -112,17 +100,16 @@ def test_a_friends_code_does_not_earn_full_marks(graded):
     # the data questions are answered for Ada's data, not Sophie's; the function question (and
     # hw02's symbolic one) is the same for everyone
     assert all(float(row[q]) == points for q, points in SAME_FOR_ALL[hw].items())
-    spec = importlib.util.spec_from_file_location(f"hidden_{hw}_grading_variants", HIDDEN[hw])
-    hidden = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(hidden)
+    hidden = load(f"hidden_{hw}_grading_variants", HIDDEN[hw])
     ada, sophie = (hidden.answers_for(variants.data(hw, graded["codes"][i])) for i in ("1001", "1003"))
     variants.data(hw, variants.DEFAULT)
     # (a question worth 0 points, multiple choice that is feedback only, has nothing to lose)
-    differ = [
+    differing = [
         q for q, points in hidden.POINTS.items()
-        if points > 0 and q not in SAME_FOR_ALL[hw] and _differ(ada[f"answer_{q}"], sophie[f"answer_{q}"])
+        if points > 0 and q not in SAME_FOR_ALL[hw] and differ(ada[f"answer_{q}"], sophie[f"answer_{q}"])
     ]
-    assert len(differ) >= DIFFER.get(hw, 3) and all(float(row[q]) < hidden.POINTS[q] for q in differ), differ
+    assert len(differing) >= DIFFER.get(hw, 3), differing
+    assert all(float(row[q]) < hidden.POINTS[q] for q in differing), differing
     if hw == "hw01":
         assert all(float(row[q]) == 0 for q in ("q1", "q4", "q5", "q7"))
     # and the feedback says why
