@@ -9,7 +9,6 @@ the limit at no extra cost.  These tests check that helper and, once, the whole 
 from __future__ import annotations
 
 import base64
-import importlib.util
 import io
 import json
 import os
@@ -20,15 +19,13 @@ import sys
 from pathlib import Path
 
 import pytest
+from _homework_support import load
 
 ROOT = Path(__file__).resolve().parents[1]
 
 
 def _root_conftest():
-    spec = importlib.util.spec_from_file_location("_root_conftest", ROOT / "conftest.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    return load("_root_conftest", ROOT / "conftest.py")
 
 
 CONF = _root_conftest()

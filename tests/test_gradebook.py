@@ -10,15 +10,14 @@ alone; the same batch on a Dask ``LocalCluster`` of two worker processes gives t
 from __future__ import annotations
 
 import csv
-import importlib.util
 import json
 import shutil
-import sys
 from datetime import datetime, timedelta
 from pathlib import Path
 
 import nbformat
 import pytest
+from _homework_support import load
 
 from course_lib.submit import manifest_of, notebook_digest, submit
 
@@ -26,10 +25,7 @@ ROOT = Path(__file__).resolve().parents[1]
 HIDDEN = ROOT / "solutions" / "hidden_tests" / "hw01.py"
 NAME = "hw01_reparametrization.ipynb"
 
-spec = importlib.util.spec_from_file_location("grade_gb", ROOT / "tools" / "grade.py")
-grade = importlib.util.module_from_spec(spec)
-sys.modules["grade_gb"] = grade
-spec.loader.exec_module(grade)
+grade = load("grade_gb", ROOT / "tools" / "grade.py")
 
 pytestmark = [pytest.mark.slow, pytest.mark.timeout(300)]
 

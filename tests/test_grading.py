@@ -14,23 +14,19 @@ from __future__ import annotations
 
 import csv
 import hashlib
-import importlib.util
 import json
-import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import pytest
+from _homework_support import load
 
 ROOT = Path(__file__).resolve().parents[1]
 FIXTURES = ROOT / "tests" / "fixtures" / "submissions" / "hw01"
 HIDDEN = ROOT / "solutions" / "hidden_tests"
 
-spec = importlib.util.spec_from_file_location("grade", ROOT / "tools" / "grade.py")
-grade = importlib.util.module_from_spec(spec)
-sys.modules["grade"] = grade
-spec.loader.exec_module(grade)
+grade = load("grade", ROOT / "tools" / "grade.py")
 
 pytestmark = [pytest.mark.slow, pytest.mark.timeout(180)]
 # the sandbox where it works (make test installs bubblewrap), else unsandboxed (macOS)

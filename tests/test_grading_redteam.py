@@ -21,7 +21,6 @@ from __future__ import annotations
 
 import csv
 import hashlib
-import importlib.util
 import os
 import sys
 import tempfile
@@ -29,6 +28,7 @@ from pathlib import Path
 
 import nbformat
 import pytest
+from _homework_support import load
 
 ROOT = Path(__file__).resolve().parents[1]
 HIDDEN = ROOT / "solutions" / "hidden_tests" / "hw01.py"
@@ -37,10 +37,7 @@ SOLUTION = ROOT / "solutions" / "hw01_reparametrization.ipynb"
 sys.path.insert(0, str(ROOT / "tests" / "fixtures" / "redteam"))
 import cheats  # noqa: E402
 
-spec = importlib.util.spec_from_file_location("grade_rt", ROOT / "tools" / "grade.py")
-grade = importlib.util.module_from_spec(spec)
-sys.modules["grade_rt"] = grade
-spec.loader.exec_module(grade)
+grade = load("grade_rt", ROOT / "tools" / "grade.py")
 
 ok, why = grade.sandbox.bwrap_works()
 pytestmark = [

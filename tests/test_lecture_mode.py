@@ -20,6 +20,7 @@ import urllib.request
 from pathlib import Path
 
 import pytest
+from _homework_support import load
 
 ROOT = Path(__file__).resolve().parents[1]
 NOTEBOOK = ROOT / "tests" / "fixtures" / "lecture_demo.ipynb"
@@ -132,12 +133,8 @@ def log_text(f) -> str:
 
 # ----------------------------------------------- make present: the deck of a lecture
 def _present():
-    import importlib.util
 
-    spec = importlib.util.spec_from_file_location("present", ROOT / "tools" / "present.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
+    return load("present", ROOT / "tools" / "present.py")
 
 
 def test_deck_is_the_lecture_without_answer_cells(tmp_path):

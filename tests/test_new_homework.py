@@ -27,6 +27,7 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
+from _homework_support import load
 
 ROOT = Path(__file__).resolve().parents[1]
 TITLE = "Are letters smooth?"
@@ -269,12 +270,6 @@ def test_it_never_overwrites_and_refuses_bad_arguments(scaffolded):
      ("G2 & C2: Beta-splines", "g2_c2_beta_splines")],
 )  # fmt: skip
 def test_file_names_come_from_the_title(title, expected):
-    import importlib.util
-
-    spec = importlib.util.spec_from_file_location(
-        "new_homework", ROOT / "tools" / "new_homework.py"
-    )
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
+    module = load("new_homework", ROOT / "tools" / "new_homework.py")
     assert module.slug(title) == expected
     assert re.fullmatch(r"[a-z0-9_]{1,40}", module.slug("word " * 30))

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import ast
 import hashlib
-import importlib.util
 import json
 import os
 import re
@@ -21,11 +20,10 @@ import zipfile
 from pathlib import Path
 
 import pytest
+from _homework_support import load
 
 ROOT = Path(__file__).resolve().parents[1]
-spec = importlib.util.spec_from_file_location("release", ROOT / "tools" / "release.py")
-release = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(release)
+release = load("release", ROOT / "tools" / "release.py")
 
 
 @pytest.fixture(scope="module")

@@ -25,7 +25,6 @@ import ast
 import concurrent.futures as cf
 import functools
 import html
-import importlib.util
 import json
 import math
 import re
@@ -38,6 +37,7 @@ from pathlib import Path
 from urllib.parse import unquote, urlsplit
 
 import pytest
+from _homework_support import load
 
 ROOT = Path(__file__).resolve().parents[1]
 ARTIFACTS = ROOT / "test-artifacts" / "site"
@@ -49,11 +49,7 @@ PAGES |= {p.stem: f"homework/{p.stem}.html" for p in sorted((ROOT / "exercises")
 
 
 def _load(name: str):
-    spec = importlib.util.spec_from_file_location(name, ROOT / "tools" / f"{name}.py")
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[name] = module
-    spec.loader.exec_module(module)
-    return module
+    return load(name, ROOT / "tools" / f"{name}.py")
 
 
 build_site = _load("build_site")
@@ -404,10 +400,7 @@ def test_tab_title_text_from_tex():
 
 
 def _load_conf():
-    spec = importlib.util.spec_from_file_location("site_conf", ROOT / "site" / "conf.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    return load("site_conf", ROOT / "site" / "conf.py")
 
 
 @pytest.mark.slow

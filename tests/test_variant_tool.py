@@ -4,22 +4,18 @@ from __future__ import annotations
 
 import ast
 import csv
-import importlib.util
 import io
 import stat
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
+from _homework_support import load
 
 from course_lib import variants
 
 ROOT = Path(__file__).resolve().parents[1]
-spec = importlib.util.spec_from_file_location("variant_tool", ROOT / "tools" / "variant.py")
-tool = importlib.util.module_from_spec(spec)
-sys.modules["variant_tool"] = tool
-spec.loader.exec_module(tool)
+tool = load("variant_tool", ROOT / "tools" / "variant.py")
 
 
 @pytest.fixture(autouse=True)
