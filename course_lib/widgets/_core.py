@@ -816,6 +816,9 @@ class Demo:
     # ----------------------------------------------------------- display
     def _repr_mimebundle_(self, **kwargs):
         if self.widget is not None:
+            from .access import publish_slider_names
+
+            publish_slider_names()  # names the slider handles (ipywidgets leaves them unnamed)
             return self.widget._repr_mimebundle_(**kwargs)
         import io
 

@@ -237,7 +237,9 @@ def reparametrization_demo(
     demo.controls.update(a=sa, t=sv)
     observe(demo, sa, lambda ch: state.set_a(snap_to_step(A_SLIDER, ch["new"])))
     observe(demo, sv, lambda ch: state.set_t(snap_to_step(V_SLIDER, ch["new"])))
-    demo.build_widgets([sa, sv])
+    from .access import point_controls
+
+    demo.build_widgets([sa, sv, point_controls(demo)])
     demo.dragger = PointDragger(
         view.ax,
         lambda: state.points,
