@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 
 project = "Geometric continuity of parametric curves"
+language = "en"  # <html lang="en"> on every page, and so the handouts' /Lang (WCAG 3.1.1)
 author = "the course authors"
 copyright = "the course authors"
 extensions = ["myst_nb"]
