@@ -195,7 +195,7 @@ check("hw02.q6", answer_q6)
 print(DATA["q7"]["text"])  # your data
 
 # %%
-### ALT Three panels. Top: your curve, its segments in alternating blue and dark orange, each
+### ALT Three panels. Top: your curve, its segments in alternating blue and brown, each
 ### ALT joint a black dot with its letter. Below, along the parameter with the joints' letters on
 ### ALT the axis: the tangent direction in degrees (left) and the signed curvature (right), one
 ### ALT line per segment; a jump in the left panel is a corner, a jump only in the right one is G1.
