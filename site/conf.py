@@ -52,6 +52,9 @@ mathjax2_config = {
 html_theme = "sphinx_book_theme"
 html_title = "Geometric continuity"
 html_static_path = ["_static"]
+# _templates/search-button-field.html (the theme finds its components by name on
+# templates_path): its search button, with the visible text as accessible name (WCAG 2.5.3)
+templates_path = ["_templates"]
 html_css_files = ["course.css"]
 html_last_updated_fmt = None
 html_copy_source = False

@@ -181,7 +181,7 @@ def test_handout_is_tagged_with_language_title_outline_and_alt_text(handout):
     reader = PdfReader(str(handout))
     root = reader.trailer["/Root"]
     assert "/StructTreeRoot" in root, "untagged PDF: no structure tree"
-    assert root.get("/MarkInfo", {}).get("/Marked") is True, "/MarkInfo /Marked is not true"
+    assert bool(root.get("/MarkInfo", {}).get("/Marked")), "/MarkInfo /Marked is not true"
     assert str(root.get("/Lang", "")).startswith("en"), f"/Lang is {root.get('/Lang')!r}"
     assert "/Outlines" in root and reader.outline, "no bookmarks"
     assert reader.metadata and reader.metadata.title, "no document title"
@@ -274,7 +274,13 @@ def test_keyboard_only_moves_a_point_and_the_live_region_says_so(lab):
     # select P1 with the keyboard: focus the selector, arrow down
     select = demo.locator(".cl-point-select select").first
     select.focus()
+    DIAG = """() => {const a = document.activeElement; const d = document.querySelector('.cl-demo');
+      return [a && a.tagName, a && a.className, a && a.value,
+              d && d.getAttribute('data-lm-suppress-shortcuts')];}"""
+    print("DIAG before", page.evaluate(DIAG))
     page.keyboard.press("ArrowDown")
+    page.wait_for_timeout(500)
+    print("DIAG after", page.evaluate(DIAG))
     expect(live).to_contain_text("P1 selected", timeout=10_000)
     text0 = live.inner_text()
 

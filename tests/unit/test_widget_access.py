@@ -120,7 +120,13 @@ def test_verdict_says_when_a_joint_is_only_g1():
 def test_slider_names_script_is_sent_once_per_display():
     bundle = slider_names_bundle()
     assert bundle["application/javascript"] == SLIDER_NAMES_JS
-    for needle in ("aria-label", "aria-valuetext", ".widget-readout", ".noUi-handle"):
+    for needle in (
+        "aria-label",
+        "aria-valuetext",
+        ".widget-readout",
+        ".noUi-handle",
+        "data-lm-suppress-shortcuts",
+    ):
         assert needle in SLIDER_NAMES_JS
 
 
