@@ -20,8 +20,8 @@ ipywidgets 8 draws a slider with noUiSlider and does not link the slider's descr
 its handle: the handle has no accessible name, and a log slider reports its exponent as
 its value.  :data:`SLIDER_NAMES_JS` (sent with each interactive demo, see
 :func:`slider_names_bundle`) names every slider handle inside a demo by its description and
-gives it the readout's text as its value text ("1.5", not "0.18"); it also marks the demo
-``data-lm-suppress-shortcuts``, so that JupyterLab's notebook shortcuts (arrow keys, Enter)
+gives it the readout's text as its value text ("1.5", not "0.18"); it also marks the demo's
+controls ``data-lm-suppress-shortcuts``, so that JupyterLab's notebook shortcuts (arrow keys, Enter)
 leave the keys to the demo's controls while one of them has the focus.
 """
 
@@ -49,11 +49,13 @@ SLIDER_NAMES_JS = r"""
 (() => {
   if (window.__courseSliderNames) { window.__courseSliderNames(); return; }
   const fix = () => {
-    // JupyterLab's command-mode shortcuts (arrows, Enter, Space...) would take the keys from
-    // the demo's selects, buttons and slider handles: Lumino skips them inside this attribute
-    for (const demo of document.querySelectorAll('.cl-demo')) {
-      if (!demo.hasAttribute('data-lm-suppress-shortcuts')) {
-        demo.setAttribute('data-lm-suppress-shortcuts', 'true');
+    // JupyterLab's command-mode shortcuts (arrows, Enter, ...) would take the keys from the
+    // demo's selects, buttons and slider handles: Lumino skips an element with this attribute
+    // (it must be on the focused element itself: the shortcut's selector matches it first)
+    const controls = '.cl-demo select, .cl-demo input, .cl-demo button, .cl-demo [tabindex]';
+    for (const el of document.querySelectorAll(controls)) {
+      if (!el.hasAttribute('data-lm-suppress-shortcuts')) {
+        el.setAttribute('data-lm-suppress-shortcuts', 'true');
       }
     }
     for (const box of document.querySelectorAll('.cl-demo .widget-slider')) {

@@ -274,13 +274,7 @@ def test_keyboard_only_moves_a_point_and_the_live_region_says_so(lab):
     # select P1 with the keyboard: focus the selector, arrow down
     select = demo.locator(".cl-point-select select").first
     select.focus()
-    DIAG = """() => {const a = document.activeElement; const d = document.querySelector('.cl-demo');
-      return [a && a.tagName, a && a.className, a && a.value,
-              d && d.getAttribute('data-lm-suppress-shortcuts')];}"""
-    print("DIAG before", page.evaluate(DIAG))
     page.keyboard.press("ArrowDown")
-    page.wait_for_timeout(500)
-    print("DIAG after", page.evaluate(DIAG))
     expect(live).to_contain_text("P1 selected", timeout=10_000)
     text0 = live.inner_text()
 

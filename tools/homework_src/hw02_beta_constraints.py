@@ -41,6 +41,7 @@ import sympy as sp
 
 from course_lib import PiecewiseBezier, variants
 from course_lib.checks import check, check_all
+from course_lib.plotting import segment_color
 
 HOMEWORK = "hw02"
 VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "ABCDE23456"
@@ -199,8 +200,6 @@ print(DATA["q7"]["text"])  # your data
 ### ALT joint a black dot with its letter. Below, along the parameter with the joints' letters on
 ### ALT the axis: the tangent direction in degrees (left) and the signed curvature (right), one
 ### ALT line per segment; a jump in the left panel is a corner, a jump only in the right one is G1.
-from course_lib.plotting import segment_color
-
 segments_q7, labels_q7 = DATA["q7"]["segments"], DATA["q7"]["labels"]
 curve_q7 = PiecewiseBezier(segments_q7)
 fig, axes = plt.subplot_mosaic([["curve", "curve"], ["angle", "kappa"]], figsize=(8.8, 4.6),
