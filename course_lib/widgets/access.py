@@ -331,19 +331,23 @@ class PointControls:
 
     def _on_step(self, change) -> None:
         s = self.coarse if change["new"] == "coarse" else self.fine
-        self.demo._sync(lambda: (setattr(self.x, "step", s), setattr(self.y, "step", s)))
+
+        def steps():
+            self.x.step = self.y.step = s
+
+        self.demo._sync(steps)
 
     def refresh(self, state=None) -> None:
         """Bring the fields, the ring and the live region up to date with the state."""
         P = np.asarray(self.points(), dtype=float)
         if len(self.select.options) != len(P):  # e.g. another glyph was chosen
             self.selected = min(self.selected, len(P) - 1)
-            self.demo._sync(
-                lambda: (
-                    setattr(self.select, "options", self._options(len(P)))
-                    or setattr(self.select, "value", self.selected)
-                )
-            )
+
+            def options():
+                self.select.options = self._options(len(P))
+                self.select.value = self.selected
+
+            self.demo._sync(options)
         x, y = P[self.selected]
 
         def fields():

@@ -133,3 +133,17 @@ def test_slider_names_script_is_sent_once_per_display():
 def test_bad_point_index_names_the_rule(beta):
     with pytest.raises(ValueError, match=r"point must be in 0\.\."):
         beta.controls["points"].select_point(99)
+
+
+def test_glyph_demo_selector_follows_the_glyph():
+    demo = glyph_demo("S")
+    pc = demo.controls["points"]
+    assert len(pc.select.options) == len(demo.state.offcurve_points())
+    demo.controls["char"].value = "o"
+    n = len(demo.state.offcurve_points())
+    assert len(pc.select.options) == n
+    assert pc.select.options[-1] == (f"off-curve {n - 1}", n - 1)
+    pc.select_point(n - 1)
+    x0 = demo.state.offcurve_points()[n - 1, 0]
+    pc.nudge(1, 0)
+    assert demo.state.offcurve_points()[n - 1, 0] == pytest.approx(x0 + pc.fine)
