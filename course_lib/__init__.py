@@ -6,11 +6,18 @@ their heavy dependencies lazily, inside the functions that need them.
 
 The central type is :class:`~course_lib.curve.PiecewiseBezier`: every
 construction returns one, every analysis, plot and widget consumes one.
+
+Imported in a Jupyter kernel, it registers :mod:`course_lib.figure_alt`'s hook: JupyterLab
+then shows each figure's text alternative (cell metadata) as a line under the figure.
 """
 
 from __future__ import annotations
 
+from . import figure_alt
 from .curve import PiecewiseBezier
+
+# in a Jupyter kernel: a figure's alt text (cell metadata mystnb.image.alt) is shown under it
+figure_alt.register_in_kernel()
 
 __version__ = "0.1.0"
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 
 project = "Geometric continuity of parametric curves"
+language = "en"  # <html lang="en"> on every page, and so the handouts' /Lang (WCAG 3.1.1)
 author = "the course authors"
 copyright = "the course authors"
 extensions = ["myst_nb"]
@@ -39,7 +40,11 @@ mathjax2_config = {
         "imageFont": None,
         "linebreaks": {"automatic": True},
     },
-    "showMathMenu": False,
+    # the menu (zoom, MathML, speech) on the right-click/context-menu key; formulas out of the
+    # tab order: a keyboard user would otherwise meet one dead stop per formula (WCAG 2.4.3);
+    # screen readers read the MathML MathJax adds next to each formula (AssistiveMML)
+    "showMathMenu": True,
+    "menuSettings": {"inTabOrder": False},
     "messageStyle": "none",
 }
 
@@ -47,6 +52,9 @@ mathjax2_config = {
 html_theme = "sphinx_book_theme"
 html_title = "Geometric continuity"
 html_static_path = ["_static"]
+# _templates/search-button-field.html (the theme finds its components by name on
+# templates_path): its search button, with the visible text as accessible name (WCAG 2.5.3)
+templates_path = ["_templates"]
 html_css_files = ["course.css"]
 html_last_updated_fmt = None
 html_copy_source = False
@@ -59,7 +67,8 @@ html_theme_options = {
     "use_repository_button": False,
     "home_page_in_toc": True,
     "navigation_with_keys": False,
-    "pygments_light_style": "default",
+    # no "pygments_light_style": the theme's default (a11y-high-contrast-light) keeps every
+    # code token at 4.5:1 or more on the code background (WCAG 1.4.3)
 }
 
 

@@ -7,7 +7,8 @@ downloaded.  The PDFs are also copied into the site (``build/site/handouts/``), 
 published with it.  Printing the site rather than converting the notebooks again means the PDF is
 exactly the page: the same executed outputs and static demo figures, the same MathJax
 (local), the same collapsed evidence cells; the site's print style (``site/_static/
-course.css``) drops the navigation.  A4, page numbers in the footer.
+course.css``) drops the navigation.  A4, page numbers in the footer.  Tagged PDFs: a
+structure tree with the figures' alt text, bookmarks from the headings, title and language.
 
 The site is served on 127.0.0.1 (a random free port) while printing: MathJax loads its
 fonts by XHR, which Chromium refuses for ``file://`` pages.  Every request to another host
@@ -168,6 +169,11 @@ def build(site: Path = SITE, out: Path = OUT, only: list[str] | None = None) -> 
                 display_header_footer=True,
                 header_template="<span></span>",
                 footer_template=FOOTER.format(title=html.escape(_title(page))),
+                # accessible PDF (WCAG 1.3.1, 2.4.5): a structure tree from the HTML (headings,
+                # lists, tables, figures with their alt text), bookmarks from the headings;
+                # its title and language come from the page (<title>, <html lang="en">)
+                tagged=True,
+                outline=True,
             )
             page.emulate_media(media="screen")
             written.append(pdf)

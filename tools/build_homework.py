@@ -18,6 +18,12 @@ Inside a code cell::
     answer_q1 = c1 / np.linalg.norm(c1)      # kept in the solution copy only
     ### END SOLUTION
     ### STUDENT answer_q1 = ...               # becomes `answer_q1 = ...` in the student copy
+    ### ALT The curve and, under it, its tangent angle and curvature ...
+
+An ``### ALT`` line (several are joined with spaces) is removed from the code and becomes the
+cell's text alternative for its figure, ``{"mystnb": {"image": {"alt": ...}}}``: MyST-NB uses it
+as the ``alt`` of the figure on the website, and JupyterLab shows it under the figure (see
+``course_lib.figure_alt``).  Every figure-producing cell needs one (``tests/test_figure_alt.py``).
 
 so the blank notebook still runs (its checks answer "not answered yet").  The notebooks are
 written without outputs, with ``execution_count`` null and stable cell ids, so they diff well
@@ -39,6 +45,7 @@ OUT = {"student": ROOT / "exercises", "solution": ROOT / "solutions"}
 
 _CELL = re.compile(r"^# %%(?: \[(markdown)\])?(?: (solution|student))?\s*$")
 _BEGIN, _END, _STUDENT = "### BEGIN SOLUTION", "### END SOLUTION", "### STUDENT"
+_ALT = "### ALT "
 
 
 def sources() -> list[Path]:
@@ -121,7 +128,12 @@ def build(source: Path, version: str) -> nbformat.NotebookNode:
         if kind == "markdown":
             cell = nbformat.v4.new_markdown_cell(_markdown(lines, where))
         else:
+            alts = [ln.strip()[len(_ALT) :].strip() for ln in lines if ln.strip().startswith(_ALT)]
+            alt = " ".join(alts)
+            lines = [ln for ln in lines if not ln.strip().startswith(_ALT)]
             cell = nbformat.v4.new_code_cell(_code_for(lines, version, where))
+            if alt:
+                cell.metadata["mystnb"] = {"image": {"alt": alt}}
         cell["id"] = f"{stem[:4]}-{k:02d}"
         cells.append(cell)
     nb = nbformat.v4.new_notebook(cells=cells)

@@ -40,7 +40,10 @@ import tempfile
 import time
 from pathlib import Path
 
+from course_lib.figure_alt import CAPTION_PREFIX, cell_alt
+
 ROOT = Path(__file__).resolve().parents[1]
+
 SITE_CONF = ROOT / "site"
 BUILD = ROOT / "build"
 DEFAULT_OUT = BUILD / "site"
@@ -243,6 +246,11 @@ def prepare(nb: dict, repo_path: str, docs: dict[str, str] | None = None) -> dic
             continue
         src = "".join(cell["source"])
         has_picture = any("image/png" in o.get("data", {}) for o in cell.get("outputs", []))
+        alt = cell_alt(meta)
+        if has_picture and alt and "figure" not in meta.get("mystnb", {}):
+            # MyST-NB: the alt text is the image's alt (mystnb.image.alt); shown also as a
+            # visible caption, as JupyterLab shows it (course_lib/figure_alt.py)
+            meta["mystnb"]["figure"] = {"caption": f"{CAPTION_PREFIX} {alt}"}
         live_demo = DEMO_CALL.search(src) and not re.search(r"static\s*=\s*True", src)
         if live_demo or (widget_figure_next and has_picture):
             cells.append(_markdown(LIVE_NOTE.format(path=repo_path), len(cells)))

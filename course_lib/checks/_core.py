@@ -65,8 +65,12 @@ class Verdict:
     def _symbol(self) -> str:
         return {PASS: "✓", UNANSWERED: "…"}.get(self.status, "✗")
 
+    def _words(self) -> str:
+        """What the symbol means, in words (a screen reader may skip "✗"; WCAG 1.1.1)."""
+        return "" if self.status in (PASS, UNANSWERED) else " (not right yet)"
+
     def __str__(self) -> str:
-        return f"{self._symbol()} {self.question}: {self.message}"
+        return f"{self._symbol()} {self.question}{self._words()}: {self.message}"
 
     def __repr__(self) -> str:
         return str(self)
@@ -78,7 +82,8 @@ class Verdict:
             f'<div class="cl-verdict cl-verdict-{self.status.replace(" ", "-")}" '
             f'style="border-left:4px solid {colour};background:{back};padding:4px 8px;'
             f'margin:2px 0;font-family:sans-serif">'
-            f'<b style="color:{colour}">{self._symbol()} {html.escape(self.question)}</b>: '
+            f'<b style="color:{colour}">{self._symbol()} {html.escape(self.question)}'
+            f"{html.escape(self._words())}</b>: "
             f"{html.escape(self.message)}</div>"
         )
 

@@ -143,13 +143,13 @@ def plot_blending_functions(
     jl = LineCollection(
         [[(x, 0.0), (x, 1.0)] for x in t[1:, 0]],
         transform=trans,
-        colors="#999999",
+        colors="#8B8B8B",
         linestyles=":",
         linewidths=1.0,
         zorder=1,
     )
     ax.add_collection(jl, autolim=False)
-    ax.axhline(0.0, color="#999999", lw=0.8, zorder=0)
+    ax.axhline(0.0, color="#8B8B8B", lw=0.8, zorder=0)
     ax.set_xlim(float(t[0, 0]), float(t[-1, -1]))
     lo, hi = float(np.min(b)), float(np.max(b))
     ax.set_ylim(min(lo, 0.0) - 0.05, max(hi, 1.0) + 0.05)

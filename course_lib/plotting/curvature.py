@@ -165,7 +165,6 @@ def plot_curvature_comb(
         color=ROLE_COLORS["comb"],
         lw=SIZES["comb"],
         zorder=zorder,
-        alpha=0.6,
         label="curvature comb",
         solid_capstyle="butt",
     )
@@ -174,7 +173,6 @@ def plot_curvature_comb(
         colors=[_envelope_color(i) for i in range(curve.n_segments)],
         linewidths=SIZES["comb_envelope"],
         zorder=zorder,
-        alpha=0.9,
     )
     ax.add_collection(env)
     ax.autoscale_view()
@@ -326,7 +324,7 @@ def plot_curvature_profile(
         zorder=1,
     )
     ax.add_collection(jl, autolim=False)
-    ax.axhline(0.0, color="#999999", lw=0.8, zorder=0)
+    ax.axhline(0.0, color="#8B8B8B", lw=0.8, zorder=0)
     if labels:
         ax.set_xlabel("arc length s" if x == "arc_length" else "parameter t")
         ax.set_ylabel("signed curvature κ" if (signed and curve.dim == 2) else "curvature |κ|")

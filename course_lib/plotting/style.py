@@ -1,8 +1,8 @@
 """One consistent, projector- and print-friendly look for every picture of the course.
 
-Colours come from the Okabe-Ito palette (distinguishable with the common forms of
-colour blindness and in greyscale print); fonts and lines are large enough to read
-from the back of a lecture room.  Nothing here changes matplotlib's global state at
+Colours come from a darkened Okabe-Ito palette (distinguishable with the common forms of
+colour blindness and in greyscale print, with WCAG AA contrast on white); fonts and lines
+are large enough to read from the back of a lecture room.  Nothing here changes matplotlib's global state at
 import time: use :func:`course_style` as a context manager (or decorator), or create
 figures with :func:`new_figure`, which applies it for you.
 """
@@ -17,16 +17,21 @@ __all__ = [
     "COLORS",
     "COURSE_RC",
     "OKABE_ITO",
+    "OKABE_ITO_ORIGINAL",
     "ROLE_COLORS",
     "SIZES",
+    "TEXT_COLOR_NAMES",
     "course_style",
     "new_figure",
     "resolve_pyplot_backend",
     "segment_color",
 ]
 
-#: The eight Okabe-Ito colours (Okabe & Ito, "Color Universal Design", 2002).
-OKABE_ITO = MappingProxyType(
+#: The eight Okabe-Ito colours as published (Okabe & Ito, "Color Universal Design", 2002).
+#: Kept for reference only: on white, orange (2.25:1), sky blue (2.31:1), yellow (1.32:1) and
+#: reddish purple are below WCAG 2.1's 3:1 for graphics (1.4.11), and bluish green (3.42:1)
+#: and vermillion (3.87:1) below 4.5:1 for text (1.4.3).
+OKABE_ITO_ORIGINAL = MappingProxyType(
     {
         "black": "#000000",
         "orange": "#E69F00",
@@ -38,6 +43,27 @@ OKABE_ITO = MappingProxyType(
         "reddish_purple": "#CC79A7",
     }
 )
+
+#: The course palette: the Okabe-Ito hues, darkened (HLS lightness lowered, hue kept) so that
+#: every colour reaches 3:1 against white as a line or mark, and the colours of
+#: :data:`TEXT_COLOR_NAMES` 4.5:1 as text (WCAG 2.1 AA, 1.4.11 and 1.4.3).  The lightness
+#: of each was chosen so that every pair stays distinguishable with protanopia, deuteranopia
+#: and tritanopia (simulated; CIELAB distance >= 10 for every pair;
+#: tests/unit/test_palette_contrast.py).
+OKABE_ITO = MappingProxyType(
+    {
+        "black": "#000000",  # 21:1
+        "orange": "#9C6C00",  # 4.6:1
+        "sky_blue": "#1D97DC",  # 3.2:1, lines and marks only
+        "bluish_green": "#008460",  # 4.7:1
+        "yellow": "#9C920C",  # 3.2:1 (an olive: a yellow cannot be darker), lines only
+        "blue": "#0072B2",  # 5.2:1 (unchanged)
+        "vermillion": "#934100",  # 7.0:1
+        "reddish_purple": "#CA74A4",  # 3.2:1, lines and marks only
+    }
+)
+#: Palette colours that may colour text on white (4.5:1 or more).
+TEXT_COLOR_NAMES = frozenset({"black", "orange", "bluish_green", "blue", "vermillion"})
 COLORS = OKABE_ITO
 
 #: What each colour means in the course's pictures (the same role, the same colour, everywhere).

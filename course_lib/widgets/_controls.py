@@ -232,6 +232,10 @@ def assemble_curve_demo(
     rows.append(w.HBox(boxes[2:]))
     rows.extend(extra_rows)
     rows.append(details_checkbox(demo))
+    if draggable:  # keyboard access to the points, and the live verdict (widgets/access.py)
+        from .access import point_controls
+
+        rows.append(point_controls(demo))
 
     if nj >= 1:
 

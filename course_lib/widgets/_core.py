@@ -290,7 +290,7 @@ class CurveDemoState:
         parts = []
         if self.warning:
             parts.append(
-                "<p class='cl-warning-text' style='color:#D55E00;font-weight:bold'>⚠ "
+                "<p class='cl-warning-text' style='color:#934100;font-weight:bold'>⚠ "
                 f"{html.escape(self.warning)}</p>"
             )
         if self.report is not None:
@@ -764,7 +764,7 @@ class Demo:
         msg = f"⚠ {type(exc).__name__}: {exc}"
         if self.warning is not None:
             self.warning.value = (
-                f"<span style='color:#D55E00;font-weight:bold'>{html.escape(msg)}</span>"
+                f"<span style='color:#934100;font-weight:bold'>{html.escape(msg)}</span>"
             )
             self.warning.layout.display = None
         if self.output is not None:
@@ -780,7 +780,7 @@ class Demo:
         self.report.value = st.report_html()
         if st.warning:
             self.warning.value = (
-                f"<span style='color:#D55E00;font-weight:bold'>⚠ {html.escape(st.warning)}</span>"
+                f"<span style='color:#934100;font-weight:bold'>⚠ {html.escape(st.warning)}</span>"
             )
             self.warning.layout.display = None
         else:
@@ -816,6 +816,9 @@ class Demo:
     # ----------------------------------------------------------- display
     def _repr_mimebundle_(self, **kwargs):
         if self.widget is not None:
+            from .access import publish_slider_names
+
+            publish_slider_names()  # names the slider handles (ipywidgets leaves them unnamed)
             return self.widget._repr_mimebundle_(**kwargs)
         import io
 

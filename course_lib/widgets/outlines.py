@@ -222,5 +222,8 @@ def glyph_demo(char: str = "S", font: str = "DejaVuSans", *, static: bool | None
     view.dragger = PointDragger(
         view.ax, state.offcurve_points, demo.guard(lambda k, x, y: state.drag(k, x, y))
     )
-    demo.build_widgets([text, drop])
+    from .access import point_controls
+
+    keys = point_controls(demo, state.offcurve_points, demo.guard(state.drag), label="off-curve ")
+    demo.build_widgets([text, drop, keys])
     return demo

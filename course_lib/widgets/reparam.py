@@ -105,7 +105,7 @@ class ReparametrizationState:
 
     def report_html(self) -> str:
         if self.warning:
-            return f"<p style='color:#D55E00;font-weight:bold'>⚠ {html.escape(self.warning)}</p>"
+            return f"<p style='color:#934100;font-weight:bold'>⚠ {html.escape(self.warning)}</p>"
         F = self.facts
 
         def vec(x):
@@ -165,7 +165,7 @@ class ReparametrizationView(BlitView):
         self.ax.set_title("one curve, two parametrizations", fontsize=13)
         v = np.linspace(0, 1, 101)
         (self.fline,) = self.fax.plot(v, v, color=red, lw=2.4)
-        self.fax.plot([0, 1], [0, 1], color="#999999", lw=1, ls=":")
+        self.fax.plot([0, 1], [0, 1], color="#8B8B8B", lw=1, ls=":")
         (self.fpt,) = self.fax.plot([], [], "o", color="black", ms=7)
         self.fax.set_xlim(0, 1)
         self.fax.set_ylim(0, 1)
@@ -237,7 +237,9 @@ def reparametrization_demo(
     demo.controls.update(a=sa, t=sv)
     observe(demo, sa, lambda ch: state.set_a(snap_to_step(A_SLIDER, ch["new"])))
     observe(demo, sv, lambda ch: state.set_t(snap_to_step(V_SLIDER, ch["new"])))
-    demo.build_widgets([sa, sv])
+    from .access import point_controls
+
+    demo.build_widgets([sa, sv, point_controls(demo)])
     demo.dragger = PointDragger(
         view.ax,
         lambda: state.points,

@@ -41,6 +41,7 @@ import sympy as sp
 
 from course_lib import PiecewiseBezier, variants
 from course_lib.checks import check, check_all
+from course_lib.plotting import segment_color
 
 HOMEWORK = "hw02"
 VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "ABCDE23456"
@@ -195,6 +196,10 @@ check("hw02.q6", answer_q6)
 print(DATA["q7"]["text"])  # your data
 
 # %%
+### ALT Three panels. Top: your curve, its segments in alternating blue and brown, each
+### ALT joint a black dot with its letter. Below, along the parameter with the joints' letters on
+### ALT the axis: the tangent direction in degrees (left) and the signed curvature (right), one
+### ALT line per segment; a jump in the left panel is a corner, a jump only in the right one is G1.
 segments_q7, labels_q7 = DATA["q7"]["segments"], DATA["q7"]["labels"]
 curve_q7 = PiecewiseBezier(segments_q7)
 fig, axes = plt.subplot_mosaic([["curve", "curve"], ["angle", "kappa"]], figsize=(8.8, 4.6),
@@ -205,9 +210,9 @@ for i in range(curve_q7.n_segments):
     p, d1, d2 = (curve_q7.evaluate_segment(i, uu, n) for n in (0, 1, 2))
     angle = np.degrees(np.arctan2(d1[:, 1], d1[:, 0]))
     kappa = (d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0]) / np.linalg.norm(d1, axis=1) ** 3
-    ax_curve.plot(p[:, 0], p[:, 1], lw=2)
-    ax_angle.plot(i + uu, angle, lw=2)
-    ax_kappa.plot(i + uu, kappa, lw=2)
+    ax_curve.plot(p[:, 0], p[:, 1], lw=2, color=segment_color(i))
+    ax_angle.plot(i + uu, angle, lw=2, color=segment_color(i))
+    ax_kappa.plot(i + uu, kappa, lw=2, color=segment_color(i))
 for name, (x, y) in zip(labels_q7, curve_q7.joint_points, strict=True):
     ax_curve.plot(x, y, "ko", ms=4)
     ax_curve.annotate(name, (x, y), xytext=(0, 8), textcoords="offset points", ha="center")

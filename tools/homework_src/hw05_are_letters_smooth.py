@@ -260,6 +260,9 @@ assert np.allclose(np.sort(t_old.point[old], axis=0), np.sort(t_new.point[new], 
 check("hw05.q6", answer_q6)
 
 # %% solution
+### ALT Two outlines of the same glyph side by side, each with its curvature comb and its joints
+### ALT marked by kind (corner, G1, G2); the title of each gives how many of its points are G2:
+### ALT the repaired outline on the right has more.
 fig, axes = plt.subplots(1, 2, figsize=(7.9, 4.6))
 for ax, outline in zip(axes, (glyph, glyph_g2), strict=True):
     plot_outline(ax, outline, comb_scale=0.01, teeth_per_segment=25, legend=(outline is glyph_g2))
