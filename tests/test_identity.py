@@ -159,3 +159,23 @@ def test_a_bad_roster_is_refused_in_one_sentence(tmp_path, bad):
     (tmp_path / "r.csv").write_text(bad, encoding="utf-8")
     with pytest.raises(SystemExit, match="--roster"):
         reports.read_roster(tmp_path / "r.csv")
+
+
+def test_variant_codes_can_be_typed_and_a_typo_is_caught_in_one_sentence():
+    code = variants.code_for(SECRET, "hw01", "1001")
+    assert len(code) == 10 and set(code) <= set(variants.ALPHABET)
+    assert not set("01ILO") & set(variants.ALPHABET)
+    assert variants.normalize(f" {code[:5].lower()}-{code[5:]} ") == code
+    for i in range(10):  # every single wrong character and every swap of neighbours is caught
+        for ch in variants.ALPHABET:
+            typo = code[:i] + ch + code[i + 1 :]
+            if typo != code:
+                with pytest.raises(variants.VariantCodeError, match="check character"):
+                    variants.normalize(typo)
+        if i < 9 and code[i] != code[i + 1]:
+            with pytest.raises(ValueError, match="does not match"):
+                variants.normalize(code[:i] + code[i + 1] + code[i] + code[i + 2 :])
+    with pytest.raises(ValueError, match=r"contains 'O', but a code is 10 characters") as exc:
+        variants.normalize("O" + code[1:])
+    assert "\n" not in str(exc.value)
+    assert exc.value._render_traceback_() == [f"VariantCodeError: {exc.value}"]  # no traceback
