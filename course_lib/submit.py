@@ -251,17 +251,32 @@ def _checked(cell, homework: str) -> str:
     return "; ".join(parts)
 
 
+def find_homework(name: str, folder: str | os.PathLike = "exercises") -> Path:
+    """The notebook ``name`` names: a path, or a homework (``hw3``, ``hw03``, ``3``) in ``folder``."""
+    if name.endswith(".ipynb") or os.sep in name:
+        return Path(name)
+    m = re.fullmatch(r"(?:hw)?0*(\d{1,2})", name.strip().lower())
+    if m is None:
+        raise ValueError(f"HW must name a homework, e.g. HW=hw01 (or hw1, 1); got {name!r}")
+    hw = f"hw{int(m.group(1)):02d}"
+    hits = sorted(Path(folder).glob(f"{hw}_*.ipynb"))
+    if not hits:
+        known = ", ".join(sorted(p.name.split("_")[0] for p in Path(folder).glob("hw*_*.ipynb")))
+        raise ValueError(f"HW={name}: no {hw} notebook in {folder}/ (there: {known or 'none'})")
+    return hits[0]
+
+
 def main(argv: list[str] | None = None) -> int:
-    """``python -m course_lib.submit NOTEBOOK --student ID`` (what ``make submit`` runs)."""
+    """``python -m course_lib.submit NOTEBOOK|HW --student ID`` (what ``make submit`` runs)."""
     import argparse
 
     p = argparse.ArgumentParser(description="Run a homework notebook fresh and write its submission.")
-    p.add_argument("notebook")
+    p.add_argument("notebook", help="the notebook, or the homework: hw01, hw1, 1")
     p.add_argument("--student", default=None, help="your student id (or COURSE_STUDENT_ID)")
     p.add_argument("--out-dir", default=None)
     args = p.parse_args(argv)
     try:
-        result = submit(args.notebook, args.student, out_dir=args.out_dir)
+        result = submit(find_homework(args.notebook), args.student, out_dir=args.out_dir)
     except ValueError as exc:
         print(f"submit: {exc}")
         return 2

@@ -1,3 +1,4 @@
+#!/usr/bin/env python3
 """Grade a folder of submitted homework notebooks against hidden tests.
 
 Usage (instructors)::
@@ -65,6 +66,15 @@ for the grader's own failures (bad arguments, a broken hidden-test file, no subm
 """
 
 from __future__ import annotations
+
+if __name__ == "__main__":  # run as printed (tools/grade.py ...): with the course's .venv if any
+    import os as _os
+    import sys as _sys
+    from pathlib import Path as _Path
+
+    _venv = _Path(__file__).resolve().parents[1] / ".venv"
+    if (_venv / "bin" / "python").is_file() and _Path(_sys.prefix).resolve() != _venv.resolve():
+        _os.execv(str(_venv / "bin" / "python"), [str(_venv / "bin" / "python"), *_sys.argv])
 
 import argparse
 import hashlib
