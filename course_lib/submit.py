@@ -7,8 +7,9 @@ From the last cell of a homework notebook::
 
 or from a shell: ``make submit HW=hw01 STUDENT=s1234567``.  The notebook is executed top to
 bottom in a fresh kernel (what the grader will do) -- except cells that call ``submit(...)``
-themselves, which are not run then (and ``submit()`` does nothing while a submission is being
-made: ``COURSE_SUBMITTING`` is set), so handing in from a cell cannot recurse.  The cells that
+themselves, which are not run then and are commented out in the submission file (and
+``submit()`` does nothing while a submission is being made: ``COURSE_SUBMITTING`` is set), so
+handing in from a cell can recurse neither here nor in the grader.  The cells that
 raised are listed, the checks are run once more ("5 of 7 checks pass; q3 not answered yet";
 an empty ``VARIANT`` in a homework with per-student variants is named), and
 ``submissions/<homework>-<student>.ipynb`` is written: the executed notebook with a small
@@ -35,6 +36,7 @@ MANIFEST_KEY = "course_submission"
 SUBMITTING_ENV = "COURSE_SUBMITTING"
 _CALLS_SUBMIT = re.compile(r"^[^#\n]*\bsubmit\s*\(", re.M)
 _MARK = "<<course-submit-checks>>"
+SUBMIT_CELL_NOTE = "# (handed in from this cell; commented out in the submission)\n"
 _CHECKS_CELL = """\
 import json as _submit_json
 _submit_out = {}
@@ -154,7 +156,7 @@ def submit(
     import nbformat
     from nbclient import NotebookClient
 
-    path = Path(notebook)
+    path = Path(notebook).absolute()  # "submissions/" next to its folder, from any cwd
     if not path.is_file():
         raise ValueError(f"notebook must be an existing .ipynb file; {path} is not")
     student = student if student is not None else os.environ.get("COURSE_STUDENT_ID", "")
@@ -191,8 +193,8 @@ def submit(
         else:
             os.environ[SUBMITTING_ENV] = before
     checked = _checked(nb.cells.pop(), homework)
-    for k, source in originals.items():
-        nb.cells[k].source = source
+    for k, source in originals.items():  # kept, commented out: the grader must not run it
+        nb.cells[k].source = SUBMIT_CELL_NOTE + "\n".join(f"# {line}" for line in source.splitlines())
         nb.cells[k].outputs = []
         nb.cells[k].execution_count = None
     failed = []

@@ -8,7 +8,7 @@ from pathlib import Path
 import nbformat
 import pytest
 
-from course_lib.submit import SUBMITTING_ENV, manifest_of, submit
+from course_lib.submit import SUBMIT_CELL_NOTE, SUBMITTING_ENV, manifest_of, submit
 
 ROOT = Path(__file__).resolve().parents[1]
 NAME = "hw01_reparametrization.ipynb"
@@ -26,7 +26,8 @@ def test_a_submit_cell_in_the_notebook_is_not_run_again(tmp_path):
     sub = submit(work / NAME, student="s1", timeout=60)
     assert sub.path == tmp_path / "submissions" / "hw01-s1.ipynb" and sub.failed_cells == []
     written = nbformat.read(sub.path, as_version=4)
-    assert written.cells[-1].source == hand_in and written.cells[-1].outputs == []
+    assert written.cells[-1].source == SUBMIT_CELL_NOTE + "\n".join(f"# {x}" for x in hand_in.splitlines())
+    assert written.cells[-1].outputs == []
     assert len(written.cells) == len(nb.cells)  # the checks cell is not left in the file
     assert not manifest_of(written)["tampered"]
     assert sub.checked.startswith("0 of 7 checks pass; q1, q2")
