@@ -30,7 +30,7 @@ from pathlib import Path
 import nbformat
 import pytest
 
-from course_lib.submit import submit
+from course_lib.submit import manifest_of, submit
 
 ROOT = Path(__file__).resolve().parents[1]
 HW, NAME, FULL = "hw01", "hw01_reparametrization.ipynb", 11
@@ -147,7 +147,8 @@ def semester(tmp_path_factory):
              "--secret-file", str(course / "course_secret.txt"), "--format", "canvas",
              "--deadline", deadline, "--late-penalty", "10%")  # fmt: skip
     console = run(*grade)
-    return {"out": out, "subs": subs, "codes": codes, "grade": grade, "console": console}
+    return {"out": out, "subs": subs, "codes": codes, "grade": grade, "console": console,
+            "handed": handed, "blank": blank.path, "course": course, "deadline": deadline}  # fmt: skip
 
 
 def _canvas_rows(out: Path) -> tuple[list[str], list[list[str]]]:
@@ -224,3 +225,76 @@ def test_a_regrade_with_only_touches_one_student(semester, tmp_path):
     ann = _results(out)["1003"]
     assert ann["status"] == "ok" and sum(ann["points"].values()) == FULL
     assert sorted(_results(out)) == ["1001", "1002", "1003", "1004", "1005", "strangerx_29999"]
+
+
+# ---------------------------------------------------------------------------------- Moodle
+WORKSHEET = (  # Moodle: Assignment > "Download grading worksheet" (ID number shown as identity)
+    "Identifier,Full name,ID number,Email address,Status,Grade,Maximum Grade,Grade can be changed,"
+    "Last modified (submission),Last modified (grade),Feedback comments\n"
+    "Participant 801,Jane Doe,1001,jane@uni.example,Submitted for grading,,11.00,Yes,,-,\n"
+    "Participant 802,Rick Roe,1002,rick@uni.example,Submitted for grading,,11.00,Yes,,-,\n"
+    "Participant 803,Ann Poe,1003,ann@uni.example,Submitted for grading,,11.00,Yes,,-,\n"
+    "Participant 804,Tom Lee,1004,tom@uni.example,Submitted for grading,,11.00,Yes,,-,\n"
+    "Participant 805,Sam Fox,1005,sam@uni.example,Submitted for grading,,11.00,Yes,,-,\n"
+    "Participant 806,Mia Kim,1006,mia@uni.example,No submission,,11.00,Yes,,-,\n"
+)
+
+
+@pytest.fixture(scope="module")
+def moodle(semester):
+    """The same semester in Moodle: "Download all submissions" (in folders), the worksheet."""
+    course = semester["course"]
+    (course / "worksheet.csv").write_text(WORKSHEET, encoding="utf-8")
+    h = semester["handed"]
+    files = {  # <Full Name>_<participant id>_assignsubmission_file_/<file>, and one flattened
+        "Jane Doe_801_assignsubmission_file_/hw01-1001.ipynb": h["1001"],
+        "Rick Roe_802_assignsubmission_file_/hw01-1002.ipynb": h["1002"],
+        "Ann Poe_803_assignsubmission_file_/first/hw01-1003.ipynb": semester["blank"],
+        "Ann Poe_803_assignsubmission_file_/hw01-1003.ipynb": h["1003"],
+        "Tom Lee_804_assignsubmission_file_hw01-1004.ipynb": h["1004"],
+        "Sam Fox_805_assignsubmission_file_/hw01-1005.ipynb": h["1005"],
+        "Max Mustermann_899_assignsubmission_file_/hw01-7777.ipynb": h["7777"],
+    }
+    subs = course / "moodle-submissions"
+    for name, src in files.items():
+        dst = subs / name
+        dst.parent.mkdir(parents=True, exist_ok=True)
+        dst.write_bytes(src.read_bytes())
+        # Moodle has no late mark in its names: the upload time is the file's time
+        when = manifest_of(nbformat.read(src, as_version=4))["time"].timestamp()
+        os.utime(dst, (when, when))
+    out = course / "grades" / "hw01-moodle"
+    run("tools/grade.py", "--tests", f"solutions/hidden_tests/{HW}.py", "--submissions", str(subs),
+        "--out", str(out), "--jobs", "2", "--roster", str(course / "worksheet.csv"),
+        "--secret-file", str(course / "course_secret.txt"), "--format", "moodle",
+        "--deadline", semester["deadline"], "--late-penalty", "10%")  # fmt: skip
+    return out
+
+
+def test_the_moodle_worksheet_comes_back_filled_in(moodle):
+    with open(moodle / "scores.csv", newline="", encoding="utf-8") as fh:
+        reader = csv.DictReader(fh)
+        assert reader.fieldnames == WORKSHEET.splitlines()[0].split(",")
+        rows = {r["Identifier"]: r for r in reader}
+    # matched to Moodle's own identifiers; the stranger and Mia (no submission) are not in it
+    assert sorted(rows) == [f"Participant {n}" for n in (801, 802, 803, 804, 805)]
+    grades = {k: float(r["Grade"]) for k, r in rows.items()}
+    assert grades["Participant 801"] == FULL and grades["Participant 803"] == FULL
+    assert grades["Participant 804"] == FULL and grades["Participant 805"] < FULL
+    assert grades["Participant 802"] == pytest.approx(FULL * 0.9)
+    assert rows["Participant 801"]["Feedback comments"].startswith("11/11; q1 2/2 ✓; q2 3/3 ✓")
+    sam = rows["Participant 805"]["Feedback comments"]
+    assert "q1 0/2" in sam and "✓" in sam
+    assert rows["Participant 802"]["Email address"] == "rick@uni.example"
+
+
+def test_moodle_flags_are_in_the_summary(moodle):
+    summary = (moodle / "summary.md").read_text(encoding="utf-8")
+    first = summary[: summary.index("## Statistics")]
+    assert "Max Mustermann_899" in first and "1004 (Tom Lee)" in first
+    late = next(x for x in first.splitlines() if x.startswith("- **Late**"))
+    assert late.endswith("1002 (Rick Roe)")
+    several = next(x for x in first.splitlines() if x.startswith("- **Several notebooks"))
+    assert several.endswith("1003 (Ann Poe)")
+    assert "Roster students without a submission (1): 1006" in first
+    assert "manifest" not in first  # no honest student's manifest disagrees with Moodle
