@@ -179,3 +179,28 @@ def test_variant_codes_can_be_typed_and_a_typo_is_caught_in_one_sentence():
         variants.normalize("O" + code[1:])
     assert "\n" not in str(exc.value)
     assert exc.value._render_traceback_() == [f"VariantCodeError: {exc.value}"]  # no traceback
+
+
+def test_a_moodle_grades_export_is_a_roster_and_gets_an_import_file_with_feedback(tmp_path):
+    (tmp_path / "g.csv").write_text(
+        "First name,Last name,ID number,Institution,Department,Email address,"
+        "Assignment: hw01 (Real),Last downloaded from this course\n"
+        "Jane,Doe,1001,Uni,Maths,jane@uni.example,-,1764000000\n"
+        "Rick,Roe,,Uni,Maths,rick@uni.example,-,1764000000\n",
+        encoding="utf-8",
+    )
+    roster = reports.read_roster(tmp_path / "g.csv")
+    assert roster.kind == "moodle-grades" and list(roster) == ["1001", "rick@uni.example"]
+    # Moodle's download folder names the student by full name and participant id
+    found = identity.parse_name(Path("Jane Doe_4711_assignsubmission_file_/hw01.ipynb"))
+    who = identity.identify(found, identity.RosterIndex(roster))
+    assert who.entry is roster["1001"] and who.how == "lms"
+    tests = grade.HiddenTests.load(ROOT / "solutions" / "hidden_tests" / "hw01.py")
+    r = grade.Result("1001", dict(tests.points), dict.fromkeys(tests.points, ""),
+                     fractions=dict.fromkeys(tests.points, 1.0))  # fmt: skip
+    r.points["q4"], r.fractions["q4"], r.notes["q4"] = 0.0, 0.0, "κ(1) is wrong"
+    r.lms = asdict(roster["1001"])
+    rows = list(csv.DictReader(reports.scores_table([r], tests, "moodle", roster, "hw01").splitlines()))
+    assert rows == [{"ID number": "1001", "Email address": "jane@uni.example", "Full name": "Jane Doe",
+                     "hw01": "9", "Feedback": "9/11; q1 2/2 ✓; q2 3/3 ✓; q4 0/2 κ(1) is wrong; "
+                     "q5 2/2 ✓; q7 2/2 ✓"}]  # fmt: skip

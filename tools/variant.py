@@ -13,9 +13,12 @@ Usage::
         # office hours: the student's code, their data and the worked answers
         # (``answers_for(data)`` of the hidden tests, solutions/hidden_tests/hw01.py)
 
-``STUDENT`` and the roster's ``id`` column are the ids the grader computes codes from
-(``tools/grade.py --secret-file --roster``: the roster's ``id`` of a submission, else the
-submission's name).
+``STUDENT`` and the roster id are the ids the grader computes codes from
+(``tools/grade.py --secret-file --roster``: the roster id of the submission's one identity).
+The roster is the course's CSV (``id`` column) or an LMS export as downloaded (Canvas's
+gradebook export: the SIS User ID; Moodle's grading worksheet or grades export: the ID number,
+else the e-mail) -- give ``codes`` and ``tools/grade.py`` the same file.  A code is 10
+characters without look-alikes, the last a check character (``course_lib.variants``).
 """
 
 from __future__ import annotations
