@@ -355,6 +355,8 @@ def _finish_result(r: Result, item: Item, args, late) -> Result:
     notes += tnotes
     if when is not None:
         r.submitted, r.time_source = when.isoformat(timespec="seconds"), source
+    else:  # never the manifest's time alone: it is written on the student's machine
+        r.submitted, r.time_source = None, "none"
     if late is not None:
         r.days_late, r.penalty = late.apply(when)
         if r.days_late:
