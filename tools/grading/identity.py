@@ -237,12 +237,16 @@ def identify(found: Found, index: RosterIndex | None) -> Identity:
     ident = Identity(entry.key, entry, how)
     if manifest_id and how != "manifest":
         other = index.get(manifest_id)
-        if other is not entry:
+        source = "LMS" if how == "lms" else "file name"
+        if other is not None and other is not entry:  # another roster student's submit()
             ident.flags.append(ID_DIFFERS)
-            whose = f" (roster student {other.id})" if other is not None else ""
             ident.notes.append(
-                f"the submit() manifest names student {manifest_id!r}{whose}, but the "
-                f"{'LMS' if how == 'lms' else 'file name'} says {entry.id}: graded as {entry.id}"
+                f"the submit() manifest names roster student {other.id} ({manifest_id!r}), but "
+                f"the {source} says {entry.id}: graded as {entry.id}"
+            )
+        elif other is None:  # another form of id (an e-mail, a login): noted, not flagged
+            ident.notes.append(
+                f"the submit() manifest names student {manifest_id!r}; the {source} says {entry.id}"
             )
     return ident
 

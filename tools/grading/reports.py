@@ -364,7 +364,7 @@ def variant_spread(results, tests, labels: dict[str, dict[str, str]]) -> dict[st
 ACT_ON = (
     ("not in the roster", "Not in the roster (not in the import file; resolve by hand, then `--only`)"),
     ("edited after submit", "Edited after submit() (checksum mismatch)"),
-    ("manifest id differs", "The submit() manifest names another student"),
+    ("manifest id differs", "The submit() manifest names another roster student"),
     ("manifest time disagrees", "The submit() manifest's time disagrees with the LMS/file time"),
     ("wrong variant code", "Wrong variant code (whose code: see the feedback)"),
     ("shared variant code", "The same variant code in several notebooks"),
