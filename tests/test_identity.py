@@ -204,3 +204,15 @@ def test_a_moodle_grades_export_is_a_roster_and_gets_an_import_file_with_feedbac
     assert rows == [{"ID number": "1001", "Email address": "jane@uni.example", "Full name": "Jane Doe",
                      "hw01": "9", "Feedback": "9/11; q1 2/2 ✓; q2 3/3 ✓; q4 0/2 κ(1) is wrong; "
                      "q5 2/2 ✓; q7 2/2 ✓"}]  # fmt: skip
+
+
+def test_a_roster_with_a_submission_column_still_matches_submit_manifests(tmp_path):
+    """Issue 23: with ``submission`` keys, submit()'s files named by student id were "missing"."""
+    (tmp_path / "roster.csv").write_text(
+        "id,submission,name\n1001,ada,Ada\n1002,emmy,Emmy\n", encoding="utf-8"
+    )
+    roster = reports.read_roster(tmp_path / "roster.csv")
+    notebook(tmp_path / "subs" / "hw01-1001.ipynb", variants.code_for(SECRET, "hw01", "1001"), "1001")
+    notebook(tmp_path / "subs" / "emmy.ipynb", variants.code_for(SECRET, "hw01", "1002"), "1002")
+    items = grade.plan(tmp_path / "subs", roster, homework="hw01", secret=SECRET, variants_on=True)
+    assert [(i.student, i.who.entry.id, i.who.flags) for i in items] == [("ada", "1001", []), ("emmy", "1002", [])]
