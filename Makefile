@@ -15,8 +15,9 @@ ALLOW_ROOT := $(if $(filter 0,$(shell id -u)),--allow-root,)
 .PHONY: install lab present test lint bench grade submit release site handouts clean
 
 $(STAMP): pyproject.toml constraints.txt
+	@echo "installing the course into $(VENV) (4-6 minutes the first time; pip shows its progress)"
 	$(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet -c constraints.txt -e ".[test]"
+	$(BIN)/python -m pip install --progress-bar on -c constraints.txt -e ".[test]"
 	touch $@
 
 install: $(STAMP)
@@ -45,18 +46,24 @@ bench: install
 	$(BIN)/python benchmarks/run.py
 
 # make grade HW=hw01 SUBMISSIONS=path/to/submitted/notebooks OUT=grades/hw01
+#      [ROSTER=roster.csv] [SECRET=course_secret.txt] [FORMAT=plain|canvas|moodle]
+#      [DEADLINE=2026-12-08T23:59+01:00] [PENALTY=10%] [EXECUTOR=local|dask] [ONLY=student]
 HW ?= hw01
 OUT ?= grading-output/$(HW)
+GRADE_OPTS = $(if $(ROSTER),--roster "$(ROSTER)") $(if $(SECRET),--secret-file "$(SECRET)") \
+	$(if $(FORMAT),--format $(FORMAT)) $(if $(DEADLINE),--deadline "$(DEADLINE)") \
+	$(if $(PENALTY),--late-penalty "$(PENALTY)") $(if $(EXECUTOR),--executor $(EXECUTOR)) \
+	$(if $(ONLY),--only "$(ONLY)")
 grade: install
 	@bash tools/ensure-sandbox || true
-	@test -n "$(SUBMISSIONS)" || (echo "usage: make grade HW=hw01 SUBMISSIONS=DIR [OUT=DIR]"; exit 2)
-	$(BIN)/python tools/grade.py --tests solutions/hidden_tests/$(HW).py \
-	    --submissions $(SUBMISSIONS) --out $(OUT) --jobs 2
+	@test -n "$(SUBMISSIONS)" || (echo "usage: make grade HW=hw01 SUBMISSIONS=DIR [OUT=DIR] [ROSTER=.. SECRET=.. FORMAT=.. DEADLINE=.. PENALTY=.. EXECUTOR=..]"; exit 2)
+	$(BIN)/python tools/grade.py --tests solutions/hidden_tests/$(firstword $(subst _, ,$(HW))).py \
+	    --submissions "$(SUBMISSIONS)" --out "$(OUT)" --jobs 2 $(GRADE_OPTS)
 
 # make submit HW=hw01 STUDENT=your-id   (runs the homework fresh, writes submissions/hw01-ID.ipynb)
 submit: install
 	@test -n "$(STUDENT)" || (echo "usage: make submit HW=hw01 STUDENT=your-id"; exit 2)
-	$(BIN)/python -m course_lib.submit $(firstword $(wildcard exercises/$(HW)_*.ipynb)) --student $(STUDENT)
+	$(BIN)/python -m course_lib.submit "$(HW)" --student "$(STUDENT)"
 
 # make release: the student edition in dist/student-edition/ and dist/student-edition.zip
 release: install

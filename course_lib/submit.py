@@ -6,7 +6,12 @@ From the last cell of a homework notebook::
     submit("hw01_reparametrization.ipynb", student="s1234567")
 
 or from a shell: ``make submit HW=hw01 STUDENT=s1234567``.  The notebook is executed top to
-bottom in a fresh kernel (what the grader will do), the cells that raised are listed, and
+bottom in a fresh kernel (what the grader will do) -- except cells that call ``submit(...)``
+themselves, which are not run then and are commented out in the submission file (and
+``submit()`` does nothing while a submission is being made: ``COURSE_SUBMITTING`` is set), so
+handing in from a cell can recurse neither here nor in the grader.  The cells that
+raised are listed, the checks are run once more ("5 of 7 checks pass; q3 not answered yet";
+an empty ``VARIANT`` in a homework with per-student variants is named), and
 ``submissions/<homework>-<student>.ipynb`` is written: the executed notebook with a small
 manifest in its metadata (``course_submission``: student id, homework, time, sha256 of the
 notebook without the manifest).  Upload that file.  The grader reads the manifest when present;
@@ -27,6 +32,27 @@ from pathlib import Path
 __all__ = ["Submission", "manifest_of", "notebook_digest", "submit"]
 
 MANIFEST_KEY = "course_submission"
+#: set while submit() runs a notebook: a submit() inside it does nothing
+SUBMITTING_ENV = "COURSE_SUBMITTING"
+_CALLS_SUBMIT = re.compile(r"^[^#\n]*\bsubmit\s*\(", re.M)
+_MARK = "<<course-submit-checks>>"
+SUBMIT_CELL_NOTE = "# (handed in from this cell; commented out in the submission)\n"
+_CHECKS_CELL = """\
+import json as _submit_json
+_submit_out = {}
+try:
+    from course_lib.checks import check_all as _submit_check_all
+    _submit_out["verdicts"] = [[v.question, v.status] for v in _submit_check_all(globals(), %r).verdicts]
+except Exception as _submit_exc:
+    _submit_out["error"] = type(_submit_exc).__name__
+_submit_out["variant"] = globals().get("VARIANT")
+try:
+    from course_lib import variants as _submit_variants
+    _submit_out["has_variants"] = %r in _submit_variants.generators()
+except Exception:
+    _submit_out["has_variants"] = False
+print(%r + _submit_json.dumps(_submit_out))
+"""
 _ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._@-]{0,63}$")
 
 
@@ -71,13 +97,20 @@ def manifest_of(nb: dict) -> dict | None:
 
 @dataclass
 class Submission:
-    path: Path
+    path: Path | None
     student: str
     homework: str
     failed_cells: list[str] = field(default_factory=list)
+    #: what the checks said in the fresh run: "5 of 7 checks pass; q3 not answered yet; ..."
+    checked: str = ""
+    skipped: bool = False  # submit() was called while a submission was being made
 
     def _repr_markdown_(self) -> str:
+        if self.skipped:
+            return "submit() is not run while the notebook is being submitted (no recursion)."
         head = f"**Submission written:** `{self.path}` ({self.homework}, student {self.student})."
+        if self.checked:
+            head += f"\n\n**Checked:** {self.checked}."
         if not self.failed_cells:
             return head + "\n\nEvery cell ran without an error in a fresh kernel. Upload that file."
         items = "\n".join(f"- {c}" for c in self.failed_cells)
@@ -123,7 +156,7 @@ def submit(
     import nbformat
     from nbclient import NotebookClient
 
-    path = Path(notebook)
+    path = Path(notebook).absolute()  # "submissions/" next to its folder, from any cwd
     if not path.is_file():
         raise ValueError(f"notebook must be an existing .ipynb file; {path} is not")
     student = student if student is not None else os.environ.get("COURSE_STUDENT_ID", "")
@@ -132,9 +165,17 @@ def submit(
             "student must be your student id (1-64 letters, digits, '.', '_', '@', "
             f"'-'; e.g. submit(..., student='s1234567')); got {student!r}"
         )
+    if os.environ.get(SUBMITTING_ENV):
+        return Submission(None, student, "", skipped=True)
     nb = nbformat.read(path, as_version=4)
     homework = _homework_of(nb, path)
     nb.metadata.pop(MANIFEST_KEY, None)
+    originals = {}
+    for k, cell in enumerate(nb.cells):  # a cell that hands in is not run while handing in
+        if cell.cell_type == "code" and _CALLS_SUBMIT.search(cell.source):
+            originals[k] = cell.source
+            cell.source = "# (this cell calls submit(): not run while submitting)"
+    nb.cells.append(nbformat.v4.new_code_cell(_CHECKS_CELL % (homework, homework, _MARK)))
     client = NotebookClient(
         nb,
         timeout=timeout,
@@ -142,7 +183,20 @@ def submit(
         kernel_name="python3",
         resources={"metadata": {"path": str(path.parent)}},
     )
-    client.execute()
+    before = os.environ.get(SUBMITTING_ENV)
+    os.environ[SUBMITTING_ENV] = "1"  # the kernel inherits it: a nested submit() does nothing
+    try:
+        client.execute()
+    finally:
+        if before is None:
+            os.environ.pop(SUBMITTING_ENV, None)
+        else:
+            os.environ[SUBMITTING_ENV] = before
+    checked = _checked(nb.cells.pop(), homework)
+    for k, source in originals.items():  # kept, commented out: the grader must not run it
+        nb.cells[k].source = SUBMIT_CELL_NOTE + "\n".join(f"# {line}" for line in source.splitlines())
+        nb.cells[k].outputs = []
+        nb.cells[k].execution_count = None
     failed = []
     number = 0
     for cell in nb.cells:
@@ -166,20 +220,65 @@ def submit(
     target_dir.mkdir(parents=True, exist_ok=True)
     target = target_dir / f"{homework}-{student}.ipynb"
     nbformat.write(nb, target)
-    return Submission(target, student, homework, failed)
+    return Submission(target, student, homework, failed, checked)
+
+
+def _checked(cell, homework: str) -> str:
+    """One line from the checks cell's output: how many pass, what is not answered, VARIANT."""
+    data = None
+    for out in cell.get("outputs", []):
+        for line in str(out.get("text", "")).splitlines():
+            if line.startswith(_MARK):
+                try:
+                    data = json.loads(line[len(_MARK):])
+                except ValueError:
+                    data = None
+    if not isinstance(data, dict) or "verdicts" not in data:
+        return "the checks could not be run in the fresh kernel"
+    verdicts = [(str(q).removeprefix(f"{homework}."), status) for q, status in data["verdicts"]]
+    passed = sum(1 for _, status in verdicts if status == "passed")
+    parts = [f"{passed} of {len(verdicts)} checks pass"]
+    todo = [q for q, status in verdicts if status == "not answered"]
+    wrong = [q for q, status in verdicts if status == "failed"]
+    if todo:
+        parts.append(", ".join(todo) + " not answered yet")
+    if wrong:
+        parts.append(", ".join(wrong) + " ✗")
+    variant = data.get("variant")
+    if data.get("has_variants") and isinstance(variant, str) and not variant.strip():
+        parts.append(
+            f"VARIANT is empty but {homework} has per-student variants: if your course hands out "
+            "variant codes, paste yours (you are graded on your own data)"
+        )
+    return "; ".join(parts)
+
+
+def find_homework(name: str, folder: str | os.PathLike = "exercises") -> Path:
+    """The notebook ``name`` names: a path, or a homework (``hw3``, ``hw03``, ``3``) in ``folder``."""
+    if name.endswith(".ipynb") or os.sep in name:
+        return Path(name)
+    m = re.fullmatch(r"(?:hw)?0*(\d{1,2})", name.strip().lower())
+    if m is None:
+        raise ValueError(f"HW must name a homework, e.g. HW=hw01 (or hw1, 1); got {name!r}")
+    hw = f"hw{int(m.group(1)):02d}"
+    hits = sorted(Path(folder).glob(f"{hw}_*.ipynb"))
+    if not hits:
+        known = ", ".join(sorted(p.name.split("_")[0] for p in Path(folder).glob("hw*_*.ipynb")))
+        raise ValueError(f"HW={name}: no {hw} notebook in {folder}/ (there: {known or 'none'})")
+    return hits[0]
 
 
 def main(argv: list[str] | None = None) -> int:
-    """``python -m course_lib.submit NOTEBOOK --student ID`` (what ``make submit`` runs)."""
+    """``python -m course_lib.submit NOTEBOOK|HW --student ID`` (what ``make submit`` runs)."""
     import argparse
 
     p = argparse.ArgumentParser(description="Run a homework notebook fresh and write its submission.")
-    p.add_argument("notebook")
+    p.add_argument("notebook", help="the notebook, or the homework: hw01, hw1, 1")
     p.add_argument("--student", default=None, help="your student id (or COURSE_STUDENT_ID)")
     p.add_argument("--out-dir", default=None)
     args = p.parse_args(argv)
     try:
-        result = submit(args.notebook, args.student, out_dir=args.out_dir)
+        result = submit(find_homework(args.notebook), args.student, out_dir=args.out_dir)
     except ValueError as exc:
         print(f"submit: {exc}")
         return 2

@@ -18,7 +18,6 @@ The generators are public (they are in the student edition): only the secret is 
 
 from __future__ import annotations
 
-import base64
 import hashlib
 import hmac
 from collections.abc import Callable
@@ -26,11 +25,14 @@ from collections.abc import Callable
 import numpy as np
 
 __all__ = [
+    "ALPHABET",
     "DEFAULT",
+    "VariantCodeError",
     "code_for",
     "current",
     "data",
     "generators",
+    "normalize",
     "register",
     "register_strata",
     "rng_for",
@@ -95,32 +97,79 @@ def _load_all() -> None:
             importlib.import_module(f"course_lib.checks.{info.name}")
 
 
+#: the characters of a code: no look-alikes (no 0/O, 1/I/L); 31 of them, a prime, so the
+#: check character catches every single wrong character and every swap of two neighbours
+ALPHABET = "ABCDEFGHJKMNPQRSTUVWXYZ23456789"
+_RULE = (
+    f"{CODE_LENGTH} characters from A-Z and 2-9 without I, L, O (no 0 or 1), the last one a "
+    "check character"
+)
+
+
+class VariantCodeError(ValueError):
+    """A VARIANT that is not a code: one sentence that names the rule, no traceback."""
+
+    def _render_traceback_(self) -> list[str]:  # IPython shows this instead of a traceback
+        return [f"VariantCodeError: {self}"]
+
+
+def _check_char(body: str) -> str:
+    total = sum((i + 1) * ALPHABET.index(c) for i, c in enumerate(body))
+    # the weights 1..CODE_LENGTH and a prime modulus: sum of (i + 1) * value = 0 (mod 31)
+    inverse = pow(CODE_LENGTH, -1, len(ALPHABET))
+    return ALPHABET[(-total * inverse) % len(ALPHABET)]
+
+
 def code_for(secret: bytes | str, homework: str, student: str) -> str:
-    """The variant code of ``student`` for ``homework`` (uppercase letters and digits)."""
+    """The variant code of ``student`` for ``homework``: :data:`CODE_LENGTH` characters of
+    :data:`ALPHABET`, the last a check character (made from an HMAC-SHA256 of both)."""
     key = secret.encode() if isinstance(secret, str) else bytes(secret)
     if len(key) < 16:
         raise ValueError("secret must be at least 16 bytes (make one with tools/variant.py secret)")
     if not isinstance(student, str) or not student.strip():
         raise ValueError("student must be a non-empty id")
     digest = hmac.new(key, f"{homework}:{student.strip()}".encode(), hashlib.sha256).digest()
-    return base64.b32encode(digest).decode()[:CODE_LENGTH]
+    number, body = int.from_bytes(digest, "big"), ""
+    for _ in range(CODE_LENGTH - 1):
+        number, k = divmod(number, len(ALPHABET))
+        body += ALPHABET[k]
+    return body + _check_char(body)
 
 
-def _normalize(code: object) -> str:
+def normalize(code: object) -> str:
+    """The code as the generator reads it (upper case, without spaces and dashes), or
+    :class:`VariantCodeError` (a ``ValueError``) saying in one sentence what is wrong."""
     if not isinstance(code, str):
         raise TypeError(f"VARIANT must be the code your instructor gave you, as a string; got {code!r}")
     text = code.strip().upper().replace("-", "").replace(" ", "")
-    if text and (len(text) != CODE_LENGTH or any(c not in "ABCDEFGHIJKLMNOPQRSTUVWXYZ234567" for c in text)):
-        raise ValueError(
-            f"VARIANT {code!r} is not a variant code: {CODE_LENGTH} letters and digits, as your "
-            "instructor gave it (or \"\" for the data printed in the notebook)"
+    if not text:
+        return text
+    where = "copy it again from your instructor's message (or use \"\" for the data printed in the notebook)"
+    bad = sorted({c for c in text if c not in ALPHABET})
+    if bad:
+        raise VariantCodeError(
+            f"VARIANT {code!r} is not a variant code: it contains {', '.join(map(repr, bad))}, but a "
+            f"code is {_RULE}; {where}."
+        )
+    if len(text) != CODE_LENGTH:
+        raise VariantCodeError(
+            f"VARIANT {code!r} is not a variant code: it has {len(text)} characters, but a code is "
+            f"{_RULE}; {where}."
+        )
+    if _check_char(text[:-1]) != text[-1]:
+        raise VariantCodeError(
+            f"VARIANT {code!r} is not a variant code: its check character does not match (a typo?); "
+            f"{where}."
         )
     return text
 
 
+_normalize = normalize  # the name the module used before
+
+
 def rng_for(homework: str, code: str) -> np.random.Generator | None:
     """The random generator of a variant (None for the default data)."""
-    text = _normalize(code)
+    text = normalize(code)
     if not text:
         return None
     seed = int.from_bytes(hashlib.sha256(f"{homework}:{text}".encode()).digest()[:8], "little")

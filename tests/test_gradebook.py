@@ -106,16 +106,21 @@ def test_canvas_import_layout_with_late_penalty(canvas):
     rows = list(csv.reader(open(canvas / "scores.csv", encoding="utf-8")))
     assert rows[0] == ["Student", "ID", "SIS User ID", "SIS Login ID", "Section", "hw01"]
     assert rows[1][0].strip() == "Points Possible" and rows[1][5] == "11"
-    by_id = {r[1]: r for r in rows[2:]}
+    # a course roster's id is the SIS User ID Canvas matches on (ID is Canvas's own user id,
+    # which only a Canvas export as roster knows); unmatched submissions never enter the file
+    by_id = {r[2]: r for r in rows[2:]}
+    assert sorted(by_id) == ["1001", "1002"] and all(r[1] == "" for r in rows[2:])
     # 11 points, one started day late at 10 % per day -> 9.9
     assert by_id["1001"][0] == "Lovelace, Ada" and float(by_id["1001"][5]) == pytest.approx(9.9)
     assert float(by_id["1002"][5]) == 0
-    assert any(r[0] == "stranger" and r[1] == "" for r in rows[2:])
     feedback = (canvas / "feedback" / "s001.md").read_text(encoding="utf-8")
     assert "10% of the points off per started day late" in feedback
     assert "Late by 1 started day(s): 10% off (11 → 9.9)" in feedback
     summary = (canvas / "summary.md").read_text(encoding="utf-8")
-    assert "not in the roster (1): stranger" in summary
+    assert "Submissions not in the roster (1): stranger" in summary
+    assert summary.index("Act on these first") < summary.index("Statistics")
+    late = next(x for x in summary.splitlines() if x.startswith("- **Late**"))
+    assert "1001 (Lovelace, Ada)" in late
     assert "without a submission (1): 1003" in summary
     assert (canvas / "histogram.png").stat().st_size > 1000
 
@@ -156,6 +161,9 @@ def test_moodle_layout(course, canvas):
     rows = _layout(canvas, course["roster"], "moodle")
     ada = next(r for r in rows if r["ID number"] == "1001")
     assert ada["Email address"] == "ada@example.org" and float(ada["hw01"]) == pytest.approx(9.9)
+    # per-question notes in the feedback column; unmatched rows are not in an import file
+    assert ada["Feedback"].startswith("9.9/11; q1 2/2 ✓") and "late: 10% off" in ada["Feedback"]
+    assert {r["ID number"] for r in rows} == {"1001", "1002"}
 
 
 def test_dask_executor_gives_the_same_scores(course, canvas, tmp_path):

@@ -157,13 +157,18 @@ def test_scaffolder_writes_the_files_and_says_what_to_do(scaffolded):
         and p.suffix in (".py", ".ipynb")
     )  # fmt: skip
     assert new == sorted([
-        f"course_lib/checks/{hw}.py", f"exercises/{stem}.ipynb", f"solutions/hidden_tests/{hw}.py",
+        f"course_lib/checks/{hw}.py", f"course_lib/checks/_variants_{hw}.py",
+        f"exercises/{stem}.ipynb", f"solutions/hidden_tests/{hw}.py",
         f"solutions/{stem}.ipynb", f"tools/homework_src/{stem}.py", "driver.py",
     ])  # fmt: skip
     assert "Next:" in made.stdout and "tests/test_answer_equivalence.py" in made.stdout
     assert "CONTRIBUTING.md" in made.stdout
     source = (root / "tools" / "homework_src" / f"{stem}.py").read_text(encoding="utf-8")
     assert f'HOMEWORK = "{hw}"' in source and f"# # Homework {int(hw[2:])} — {TITLE}" in source
+    # a variant generator is scaffolded and wired: notebook, check and hidden test read its data
+    assert 'VARIANT = ""' in source and "DATA = variants.data(HOMEWORK, VARIANT)" in source
+    hidden = (root / "solutions" / "hidden_tests" / f"{hw}.py").read_text(encoding="utf-8")
+    assert "VARIANTS = True" in hidden and "def q1(student, data=None):" in hidden
     # nothing was written into this checkout
     assert not list((ROOT / "course_lib" / "checks").glob(f"{hw}.py"))
     assert not list((ROOT / "tools" / "homework_src").glob(f"{hw}_*.py"))

@@ -56,7 +56,7 @@ def _data_for(glyph, q3: int, order=None) -> dict:
     original = gen._params
     gen._params = lambda rng: p
     try:
-        return variants.data("hw05", "ABCDEFGHIJ")  # any code: _params is replaced
+        return variants.data("hw05", CODES[0])  # any code: _params is replaced
     finally:
         gen._params = original
 

@@ -1,3 +1,4 @@
+#!/usr/bin/env python3
 """Grade a folder of submitted homework notebooks against hidden tests.
 
 Usage (instructors)::
@@ -11,11 +12,17 @@ notes on the run), each row and file as soon as its submission is graded.
 
 Who the student is
 ------------------
-A notebook directly in ``--submissions`` is the student named by its file name
-(``alice.ipynb`` -> ``alice``); a notebook inside a sub-folder belongs to the student named by
-that top-level folder (``alice/hw01.ipynb`` -> ``alice``).  When one student has several
-notebooks, the most recently modified one is graded and the others are listed in the notes
-and in the status.  Feedback file names are unique per student.
+One identity per submission picks the roster row, the variant, the feedback file and the
+gradebook row (``tools/grading/identity.py``): the LMS's own download naming (Canvas's
+``doejane_LATE_12345_67890_hw03-1001.ipynb``, Moodle's ``Jane Doe_4711_assignsubmission_file_/``
+folders), else the file or folder name (``alice.ipynb``, ``alice/hw01.ipynb``, submit()'s
+``hw03-1001.ipynb`` is student ``1001``), else the id in the ``submit()`` manifest.  With a
+roster and a course secret, a submission that matches no roster entry is not graded (it would
+be graded on the wrong data): it is listed in ``summary.md`` for the instructor to resolve.
+When one student has several notebooks, the one with the newest valid manifest time (else file
+time) is graded and the status says ``several notebooks``.  Flags (edited after submit, manifest
+time or id disagreeing, late, wrong or shared variant code) go into the status column, the
+feedback and the summary.
 
 The trust boundary
 ------------------
@@ -60,6 +67,15 @@ for the grader's own failures (bad arguments, a broken hidden-test file, no subm
 
 from __future__ import annotations
 
+if __name__ == "__main__":  # run as printed (tools/grade.py ...): with the course's .venv if any
+    import os as _os
+    import sys as _sys
+    from pathlib import Path as _Path
+
+    _venv = _Path(__file__).resolve().parents[1] / ".venv"
+    if (_venv / "bin" / "python").is_file() and _Path(_sys.prefix).resolve() != _venv.resolve():
+        _os.execv(str(_venv / "bin" / "python"), [str(_venv / "bin" / "python"), *_sys.argv])
+
 import argparse
 import hashlib
 import json
@@ -68,13 +84,12 @@ import re
 import sys
 import threading
 from concurrent.futures import ThreadPoolExecutor, as_completed
-from dataclasses import asdict
-from datetime import datetime, timezone
+from dataclasses import asdict, dataclass
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from grading import reports, sandbox
+from grading import identity, reports, sandbox
 from grading.runner import (
     DEFAULT_CELL_TIMEOUT,
     DEFAULT_QUESTION_TIMEOUT,
@@ -103,22 +118,96 @@ __all__ = [
 # ------------------------------------------------------------------------------ batches
 
 
+@dataclass
+class Item:
+    """One student's submission as planned: the notebook to grade and what is known about it."""
+
+    student: str
+    found: identity.Found
+    others: list[identity.Found]
+    who: identity.Identity
+    variant: str = ""  # the code the student is graded on ("" = the default data)
+    graded: bool = True  # False: listed for the instructor, not graded
+
+    @property
+    def path(self) -> Path:
+        return self.found.path
+
+
+def _code(text: str | None) -> str:
+    return (text or "").strip().upper().replace("-", "").replace(" ", "")
+
+
+def plan(
+    folder: Path, roster=None, *, homework: str = "", secret: bytes | None = None,
+    variants_on: bool = False,
+) -> list[Item]:  # fmt: skip
+    """Every student's submission, identified once, sorted by student (see the docstring)."""
+    index = identity.RosterIndex(roster) if roster is not None else None
+    groups: dict[str, list[tuple[identity.Found, identity.Identity]]] = {}
+    for found in identity.discover(folder):
+        who = identity.identify(found, index)
+        groups.setdefault(who.student, []).append((found, who))
+    items = []
+    for student in sorted(groups):
+        pairs = sorted(groups[student], key=lambda p: p[0].order(), reverse=True)
+        (found, who), rest = pairs[0], [p[0] for p in pairs[1:]]
+        item = Item(student, found, rest, who)
+        if rest:
+            who.flags.append(identity.SEVERAL)
+            who.notes.append(
+                f"several notebooks were submitted; graded {found.rel} (the newest), ignored "
+                + ", ".join(o.rel for o in rest)
+            )
+        if variants_on and secret is not None:
+            if who.entry is not None:
+                item.variant = variants.code_for(secret, homework, who.entry.id)
+            elif roster is not None:
+                item.graded = False  # its own data is unknown: never grade it on another's
+                who.notes.append("not graded: with a course secret it would be graded on the wrong data")
+            else:
+                item.variant = variants.code_for(secret, homework, student)
+        items.append(item)
+    if variants_on and secret is not None:
+        _variant_flags(items, roster, homework, secret)
+    return items
+
+
+def _variant_flags(items: list[Item], roster, homework: str, secret: bytes) -> None:
+    """Whose code did each notebook use (the grader can tell: codes are made from roster ids)."""
+    owner = {}
+    for entry in (roster or {}).values():
+        owner[variants.code_for(secret, homework, entry.id)] = entry.id
+    for item in items:
+        owner.setdefault(item.variant, item.who.entry.id if item.who.entry else item.student)
+    users: dict[str, list[str]] = {}
+    for item in items:
+        if item.graded and _code(item.found.variant_used):
+            users.setdefault(_code(item.found.variant_used), []).append(item.student)
+    for item in items:
+        if not item.graded or not item.variant:
+            continue
+        used = _code(item.found.variant_used)
+        if not used:
+            item.who.flags.append(identity.NO_CODE)
+            continue
+        if used != item.variant:
+            whose = owner.get(used)
+            item.who.flags.append(identity.WRONG_CODE)
+            item.who.notes.append(
+                f"the notebook's VARIANT is the code of roster student {whose}"
+                if whose else "the notebook's VARIANT is no roster student's code"
+            )
+        if len(users.get(used, [])) > 1:
+            item.who.flags.append(identity.SHARED_CODE)
+            item.who.notes.append(
+                "the same VARIANT is in the notebooks of " + ", ".join(sorted(users[used]))
+            )
+
+
 def discover(folder: Path) -> list[tuple[str, Path, list[Path]]]:
-    """``(student, notebook to grade, other notebooks of that student)``, sorted by student."""
-    by_student: dict[str, list[Path]] = {}
-    for f in sorted(folder.rglob("*.ipynb")):
-        rel = f.relative_to(folder)
-        if ".ipynb_checkpoints" in rel.parts or any(p.startswith(".") for p in rel.parts):
-            continue
-        if not f.is_file():
-            continue
-        student = rel.stem if len(rel.parts) == 1 else rel.parts[0]
-        by_student.setdefault(student, []).append(f)
-    out = []
-    for student in sorted(by_student):
-        files = sorted(by_student[student], key=lambda p: (-p.stat().st_mtime, str(p)))
-        out.append((student, files[0], files[1:]))
-    return out
+    """``(student, notebook to grade, other notebooks of that student)``, without a roster."""
+    return [(i.student, i.path, [o.path for o in i.others]) for i in plan(folder)]
 
 
 _SAFE = re.compile(r"[A-Za-z0-9._-]")
@@ -164,15 +253,9 @@ class Reports:
         self.lock = threading.Lock()
         (out / "feedback").mkdir(parents=True, exist_ok=True)
 
-    def lookup(self, r: Result) -> None:
-        if self.roster is None:
-            return
-        entry = self.roster.get(r.student) or (
-            self.roster.get(r.manifest_student) if r.manifest_student else None
-        )
-        r.lms = asdict(entry) if entry else None
-        if entry is None:
-            r.run_notes.append("not in the roster: map this submission to a student by hand")
+    def lookup(self, r: Result, entry=None) -> None:
+        if self.roster is not None:
+            r.lms = asdict(entry) if entry is not None else None
 
     def add(self, r: Result) -> None:
         with self.lock:
@@ -206,12 +289,17 @@ class Reports:
                 self.labels[r.student] = variants.strata(self.tests.homework, r.variant)
         return {r.student: self.labels[r.student] for r in results if r.variant}
 
+    def graded_students(self) -> list[Result]:
+        """The results of the class: roster students only when there is a roster."""
+        results = [r for r in self.results.values() if not r.status.startswith(NOT_GRADED)]
+        return [r for r in results if r.lms] if self.roster is not None else results
+
     def finish(self) -> None:
         with self.lock:
             self.write()
             reports.atomic_write(
                 self.out / "histogram.png",
-                reports.histogram_png(list(self.results.values()), self.tests),
+                reports.histogram_png(self.graded_students(), self.tests),
             )
 
 
@@ -248,22 +336,51 @@ def resolve_sandbox(choice: str) -> tuple[str, str]:
     return "none", f"WARNING: {why}; " + UNSANDBOXED_NOTE
 
 
-def _finish_result(r: Result, item, folder: Path, args, late) -> Result:
-    student, path, others = item
-    r.file = path.relative_to(folder).as_posix()
-    if others:
-        r.status = f"{r.status}; several notebooks"
-        r.run_notes.append(
-            f"several notebooks were submitted; graded {r.file} (the newest), ignored "
-            + ", ".join(o.relative_to(folder).as_posix() for o in others)
-        )
-    if r.manifest_student and r.manifest_student != student:
-        r.run_notes.append(f"the submission's manifest names student {r.manifest_student!r}")
-    if args.time_source == "file" or r.submitted is None:
-        mtime = datetime.fromtimestamp(path.stat().st_mtime, tz=timezone.utc)
-        r.submitted, r.time_source = mtime.isoformat(timespec="seconds"), "file time"
+NOT_GRADED = "not graded"
+
+
+def _finish_result(r: Result, item: Item, args, late) -> Result:
+    """The identity, the trusted time and every flag of a graded (or listed) submission."""
+    found, who = item.found, item.who
+    r.student, r.file = item.student, found.rel
+    flags = list(who.flags)
+    notes = list(who.notes)
+    if found.manifest is not None and found.manifest["tampered"]:
+        flags.insert(0, identity.EDITED)
+    deadline = late.deadline if late is not None else None
+    when, source, tflags, tnotes = identity.time_flags(found, deadline)
+    if args.time_source == "file":
+        when, source = found.mtime, "file time"
+    flags += tflags
+    notes += tnotes
+    if when is not None:
+        r.submitted, r.time_source = when.isoformat(timespec="seconds"), source
+    else:  # never the manifest's time alone: it is written on the student's machine
+        r.submitted, r.time_source = None, "none"
     if late is not None:
-        r.days_late, r.penalty = late.apply(datetime.fromisoformat(r.submitted))
+        r.days_late, r.penalty = late.apply(when)
+        if r.days_late:
+            flags.append(identity.LATE)
+    r.run_notes = [n for n in r.run_notes if not n.startswith("the submission's manifest names")]
+    r.run_notes[:0] = notes
+    seen = []
+    for f in flags:
+        if f not in seen:
+            seen.append(f)
+    if seen:
+        r.status = "; ".join([r.status, *seen])
+    return r
+
+
+def _not_graded(item: Item, tests: HiddenTests, mode: str) -> Result:
+    reason = "not in the roster" if item.who.entry is None else "not graded"
+    r = Result(
+        item.student,
+        dict.fromkeys(tests.points, 0.0),
+        dict.fromkeys(tests.points, f"not graded ({reason})"),
+        status=NOT_GRADED,
+        sandbox=mode,
+    )
     return r
 
 
@@ -295,9 +412,10 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--late-penalty", default="10%", help="per started day late (default 10%%)")
     p.add_argument(
         "--time-source",
-        choices=["manifest", "file"],
-        default="manifest",
-        help="submission time: submit()'s manifest (else the file time), or file time",
+        choices=["lms", "file"],
+        default="lms",
+        help="submission time: the LMS's record where it has one (Canvas's LATE mark), else "
+        "the file time; or always the file time.  The manifest's time is only compared",
     )
     p.add_argument("--only", metavar="STUDENT", help="regrade one student, merge into --out")
     p.add_argument(
@@ -318,16 +436,25 @@ def main(argv: list[str] | None = None) -> int:
     if not args.submissions.is_dir():
         print(f"--submissions {args.submissions} is not a folder", file=sys.stderr)
         return 2
-    found = discover(args.submissions)
+    roster = reports.read_roster(args.roster) if args.roster else None
+    secret = read_secret(args.secret_file) if args.secret_file else None
+    if tests.variants and secret is None:
+        print(
+            f"note: {tests.homework} has per-student variants; without --secret-file every "
+            "submission is graded on the default data",
+            file=sys.stderr,
+        )
+    found = plan(args.submissions, roster, homework=tests.homework, secret=secret,
+                 variants_on=tests.variants)  # fmt: skip
     if args.only is not None:
-        found = [f for f in found if f[0] == args.only]
+        found = [i for i in found if args.only == i.student
+                 or (i.who.entry is not None and args.only in (i.who.entry.id, *i.who.entry.aliases))]  # fmt: skip
         if not found:
             print(f"--only {args.only}: no submission of that student", file=sys.stderr)
             return 2
     if not found:
         print(f"no .ipynb files under {args.submissions}", file=sys.stderr)
         return 1
-    roster = reports.read_roster(args.roster) if args.roster else None
     late = (reports.LatePolicy(reports.parse_deadline(args.deadline),
                                reports.parse_penalty(args.late_penalty))
             if args.deadline else None)  # fmt: skip
@@ -347,43 +474,43 @@ def main(argv: list[str] | None = None) -> int:
         "limits": limits,
     }
     args.out.mkdir(parents=True, exist_ok=True)
-    keep = load_previous(args.out, tests) if args.only is not None else None
+    keep = None
+    if args.only is not None:  # the regraded submissions replace their earlier rows
+        files = {i.found.rel for i in found} | {o.rel for i in found for o in i.others}
+        students = {i.student for i in found}
+        keep = [r for r in load_previous(args.out, tests)
+                if r.student not in students and r.file not in files]  # fmt: skip
     out = Reports(tests, args.out, fmt=args.format, roster=roster, late=late, keep=keep)
 
-    secret = read_secret(args.secret_file) if args.secret_file else None
-    if tests.variants and secret is None:
-        print(
-            f"note: {tests.homework} has per-student variants; without --secret-file every "
-            "submission is graded on the default data",
-            file=sys.stderr,
-        )
-
-    def payload(item) -> dict:
-        student, path, _ = item
+    def payload(item: Item) -> dict:
         opts = dict(options)
         if tests.variants and secret is not None:
-            # the code is made from the id the instructor handed codes out for: the roster's
-            # LMS id when there is a roster entry, else the submission's name
-            entry = roster.get(student) if roster else None
-            who = entry.id if entry else student
-            opts["variant"] = variants.code_for(secret, tests.homework, who)
+            # the code is made from the roster id the instructor handed codes out for
+            opts["variant"] = item.variant
         return {
             "tests_source": tests.source,
             "tests_name": str(args.tests),
-            "student": student,
-            "notebook": path.read_bytes(),
+            "student": item.student,
+            "notebook": item.path.read_bytes(),
             "options": opts,
         }
 
-    def done(item, data: dict) -> None:
-        r = _finish_result(Result(**data), item, args.submissions, args, late)
-        out.lookup(r)
+    def done(item: Item, data: dict) -> None:
+        r = _finish_result(Result(**data), item, args, late)
+        out.lookup(r, item.who.entry)
         out.add(r)
         print(
             f"{r.student}: {reports.final_total(r):g} / {tests.max_points:g} "
             f"({r.status}, {r.seconds:g} s)",
             flush=True,
         )
+
+    for item in [i for i in found if not i.graded]:
+        r = _finish_result(_not_graded(item, tests, mode), item, args, late)
+        out.lookup(r, None)
+        out.add(r)
+        print(f"{r.student}: listed, not graded ({r.status})", flush=True)
+    found = [i for i in found if i.graded]
 
     if args.executor == "dask":
         from distributed import Client, LocalCluster
@@ -413,7 +540,7 @@ def main(argv: list[str] | None = None) -> int:
                 except Exception as exc:  # a lost worker: the row says so, the batch goes on
                     data = asdict(
                         Result(
-                            item[0],
+                            item.student,
                             dict.fromkeys(tests.points, 0.0),
                             dict.fromkeys(tests.points, "not graded"),
                             [f"the Dask worker failed ({type(exc).__name__})"],

@@ -11,6 +11,10 @@ writes
   value question and one function question as examples, their check cells, "Check everything"
   and "Hand in";
 * ``course_lib/checks/hw05.py`` -- the feedback checks of the two example questions;
+* ``course_lib/checks/_variants_hw05.py`` -- the generator of every student's own data
+  (per-student variants, ``course_lib/variants.py``): the value question reads its data from
+  ``DATA = variants.data(HOMEWORK, VARIANT)``, the check from ``variants.current``, the hidden
+  test from its ``data`` argument;
 * ``solutions/hidden_tests/hw05.py`` -- the hidden tests of the two example questions (form:
   ``solutions/hidden_tests/README.md``);
 * ``exercises/hw05_are_letters_smooth.ipynb`` and ``solutions/...`` -- by running
@@ -85,6 +89,7 @@ def planned_files(homework: str, title: str, root: Path = ROOT) -> dict[str, Pat
     return {
         "source": root / "tools" / "homework_src" / f"{stem}.py",
         "checks": root / "course_lib" / "checks" / f"{homework}.py",
+        "generator": root / "course_lib" / "checks" / f"_variants_{homework}.py",
         "hidden": root / "solutions" / "hidden_tests" / f"{homework}.py",
         "exercise": root / "exercises" / f"{stem}.ipynb",
         "solution": root / "solutions" / f"{stem}.ipynb",
@@ -99,6 +104,7 @@ def existing_files(homework: str, root: Path = ROOT) -> list[Path]:
         *(root / "solutions").glob(f"{homework}_*.ipynb"),
     ]
     found += [p for p in (root / "course_lib" / "checks" / f"{homework}.py",
+                          root / "course_lib" / "checks" / f"_variants_{homework}.py",
                           root / "solutions" / "hidden_tests" / f"{homework}.py") if p.exists()]  # fmt: skip
     return sorted(found)
 
@@ -137,20 +143,27 @@ SOURCE = r'''# Source of exercises/@STEM@.ipynb and solutions/@STEM@.ipynb.
 # %%
 import numpy as np
 
+from course_lib import variants
 from course_lib.checks import check, check_all
 
 HOMEWORK = "@HW@"
+VARIANT = ""  # paste the variant code your instructor gave you (10 characters)
+DATA = variants.data(HOMEWORK, VARIANT)
 
 # %% [markdown]
 # ## Question 1 — a velocity (compute)
 #
-# TODO: an example of a value question; replace it. The plane curve
+# TODO: an example of a value question on your own data; replace it. The plane curve
 # $\mathbf c(t) = (t^2,\ t^3)$ is traced for increasing $t$. Compute its velocity
-# $\mathbf c'(2)$ as a numpy array of shape `(2,)`.
+# $\mathbf c'(t_0)$ at the $t_0$ of your data (printed below, `DATA["q1"]["t"]`) as a numpy
+# array of shape `(2,)`.
+
+# %%
+print(DATA["q1"]["text"])  # your data
 
 # %%
 ### BEGIN SOLUTION
-t = 2.0
+t = DATA["q1"]["t"]
 answer_q1 = np.array([2 * t, 3 * t**2])  # c'(t) = (2t, 3t²)
 ### END SOLUTION
 ### STUDENT answer_q1 = ...
@@ -221,23 +234,20 @@ from __future__ import annotations
 
 import numpy as np
 
+from .. import variants
+from . import _variants_@HW@  # noqa: F401  (registers the generator of @HW@'s data)
 from ._core import as_vector, call_answer, close, fail, ok, register
 
-DATA = {
-    # q1: the curve c(t) = (t^2, t^3); its velocity at t = 2
-    "q1": {"t": 2.0},
-}
 
-
-@register("@HW@.q1", "answer_q1", "the velocity of c(t) = (t², t³) at t = 2")
+@register("@HW@.q1", "answer_q1", "the velocity of c(t) = (t², t³) at your t0")
 def _q1(answer):
     v = as_vector(answer, (2,), "answer_q1", "a plane vector np.array([x, y])")
-    t = DATA["q1"]["t"]
+    t = variants.current("@HW@")["q1"]["t"]  # the student's own data (their VARIANT)
     if close(v, [2 * t, 3 * t**2]):
         return ok("correct.")
     if close(v, [t**2, t**3]):
-        return fail("that is the point c(2); the velocity is the derivative c'(2).")
-    return fail("not c'(2): differentiate each coordinate of c(t), then put t = 2.")
+        return fail("that is the point c(t0); the velocity is the derivative c'(t0).")
+    return fail("not c'(t0): differentiate each coordinate of c(t), then put t = t0.")
 
 
 # a plane vector, a space vector, a tiny one (no absolute tolerance on the length)
@@ -275,9 +285,11 @@ from course_lib import answers
 
 HOMEWORK = "@HW@"
 POINTS = {"q1": 1, "q2": 2}
+#: per-student variants: the grader calls qN(student, data) with the student's own data
+#: (``course_lib/checks/_variants_@HW@.py``); without data, the default data below
+VARIANTS = True
 
-#: The question data as stated in the notebook.  Expected values are computed from it, so a
-#: per-student variant can replace it without touching the tests.
+#: The default data (what ``variants.data("@HW@", "")`` gives).
 DATA = {
     "q1": {"t": 2.0},  # c(t) = (t², t³)
 }
@@ -291,14 +303,14 @@ Q2_CASES = [
 ]
 
 
-def q1(student):
+def q1(student, data=None):
     v = answers.array(student["answer_q1"], (2,), "answer_q1", "a plane vector")
-    t = DATA["q1"]["t"]
-    # differentiated by hand: c'(t) = (2t, 3t²), so c'(2) = (4, 12)
-    assert answers.close(v, [2 * t, 3 * t * t]), "the velocity c'(2) is wrong"
+    t = (data or DATA)["q1"]["t"]
+    # differentiated by hand: c'(t) = (2t, 3t²)
+    assert answers.close(v, [2 * t, 3 * t * t]), "the velocity c'(t0) is wrong"
 
 
-def q2(student):
+def q2(student, data=None):  # the same for everyone: hidden cases of its own
     func = student.function("unit_tangent")
 
     def case(v):
@@ -312,6 +324,33 @@ def q2(student):
 
     # one point per case: a ✓ of the check cannot hide a special case
     return answers.partial_credit([case(v) for v in Q2_CASES])
+
+
+def answers_for(data):
+    """The worked answers of a variant (``tools/variant.py show``: office hours)."""
+    t = data["q1"]["t"]
+    return {"answer_q1": [2 * t, 3 * t * t], "unit_tangent": "v / ‖v‖ (any data)"}
+'''
+
+GENERATOR = r'''"""The question data of homework @N@ as a function of a random generator (per-student variants).
+
+``generate(None)`` is the default data (the notebook's ``VARIANT = ""``); ``generate(rng)`` a
+student's own variant (:mod:`course_lib.variants`: the code the instructor hands out seeds
+``rng``).  Emit only well-posed data: a test over many codes should prove it
+(``tests/test_variants_hw01.py`` is the model).
+"""
+
+from __future__ import annotations
+
+from .. import variants
+
+__all__ = ["generate"]
+
+
+@variants.register("@HW@")
+def generate(rng) -> dict:
+    t = 2.0 if rng is None else float(rng.integers(2, 6))  # q1: t0 in 2..5, never 0
+    return {"q1": {"t": t, "text": f"c(t) = (t², t³), t0 = {t:g}"}}
 '''
 
 
@@ -339,8 +378,10 @@ NEXT_STEPS = """
 Next:
   1. Write your questions (5 to 8) in {source}:
      replace the two examples and every TODO; then  python tools/build_homework.py
-  2. One check per question in {checks} and one qN(student) per question in
-     {hidden} (POINTS in the same order, >= 5 specific assert/comment/return lines).
+  2. One check per question in {checks} and one qN(student, data) per question in
+     {hidden} (POINTS in the same order, >= 5 specific assert/comment/return lines);
+     each student's data comes from {generator} (per-student variants):
+     add a tests/test_variants_hwNN.py like tests/test_variants_hw01.py.
   3. One row per question in TABLE of tests/test_answer_equivalence.py (>= 2 accepted forms,
      >= 3 typical wrong answers) and a right answer in RIGHT of tests/unit/test_checks.py, then run
        pytest tests/test_homework_build.py tests/unit/test_checks.py tests/test_answer_equivalence.py
@@ -366,7 +407,8 @@ def main(argv: list[str] | None = None) -> int:
         return 1
     files = planned_files(homework, title)
     stem = files["source"].stem
-    for key, template in (("source", SOURCE), ("checks", CHECKS), ("hidden", HIDDEN)):
+    for key, template in (("source", SOURCE), ("generator", GENERATOR), ("checks", CHECKS),
+                          ("hidden", HIDDEN)):  # fmt: skip
         path = files[key]
         path.parent.mkdir(parents=True, exist_ok=True)
         with open(path, "x", encoding="utf-8") as fh:  # "x": never overwrite

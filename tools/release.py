@@ -16,6 +16,7 @@ hidden-test names and the hidden tests' data.
 from __future__ import annotations
 
 import argparse
+import re
 import shutil
 import sys
 import zipfile
@@ -58,13 +59,26 @@ cell checks everything at once. The checks are feedback: your grade comes from t
 grader, which runs its own tests on other data, so write code that works in general and keep the
 answer names.
 
+## Your variant code
+
+Every homework gives each student their own data. Your instructor hands you a short **variant
+code** per homework (10 characters from A–Z and 2–9, without I, L, O, 0 or 1; the last one is a
+check character, so a typo is caught at once). Paste it into the Preparations cell of the
+homework, `VARIANT = "..."`, and run the notebook again: the cells marked "your data" now print
+*your* data, and the checks give feedback on it. Your grade is computed on your own data from
+your student id, so a friend's code (or none) makes the data questions wrong. With
+`VARIANT = ""` you see the data printed in the notebook — fine to practise, not to hand in.
+
 ## Submit
 
-Save the notebook, then `make submit HW=hw01 STUDENT=your-id` (or, in a cell,
+Save the notebook, then `make submit HW=hw01 STUDENT=your-id` (`HW=hw1` or `HW=1` work too; or,
+in a new cell at the end of the notebook,
 `from course_lib.submit import submit; submit("hw01_reparametrization.ipynb", student="your-id")`).
-It runs your notebook top to bottom in a fresh kernel — exactly what the grader does — lists the
-cells that raise an error, and writes `submissions/hw01-your-id.ipynb` with a small manifest (your
-id, the homework, the time, a checksum). Upload that file where your instructor says.
+It runs your notebook top to bottom in a fresh kernel — exactly what the grader does; the cell
+that calls `submit` is not run again — lists the cells that raise an error, says how many checks
+pass (and if `VARIANT` is still empty), and writes `submissions/hw01-your-id.ipynb` with a small
+manifest (your id, the homework, the time, a checksum). Upload that file where your instructor
+says, without opening and saving it again (the grader notices a file changed after `submit`).
 """
 
 STUDENT_MAKEFILE = """# The student edition's commands (Python 3.10+):
@@ -79,8 +93,9 @@ ALLOW_ROOT := $(if $(filter 0,$(shell id -u)),--allow-root,)
 .PHONY: install lab submit
 
 $(STAMP): pyproject.toml constraints.txt
+\t@echo "installing the course into $(VENV) (a few minutes the first time)"
 \t$(PYTHON) -m venv $(VENV)
-\t$(BIN)/python -m pip install --quiet -c constraints.txt -e .
+\t$(BIN)/python -m pip install --progress-bar on -c constraints.txt -e .
 \ttouch $@
 
 install: $(STAMP)
@@ -91,7 +106,7 @@ lab: install
 
 submit: install
 \t@test -n "$(STUDENT)" || (echo "usage: make submit HW=hw01 STUDENT=your-id"; exit 2)
-\t$(BIN)/python -m course_lib.submit $(firstword $(wildcard exercises/$(HW)_*.ipynb)) --student $(STUDENT)
+\t$(BIN)/python -m course_lib.submit "$(HW)" --student "$(STUDENT)"
 """
 
 
@@ -159,8 +174,50 @@ def _student_welcome(text: str) -> str:
     return nbformat.writes(nb) + "\n"
 
 
+#: what must not be left in an edition: an author's TODO/FIXME, new_homework.py's @HW@ fields
+UNFINISHED = re.compile(r"\bTODO\b|\bFIXME\b|\bXXX\b|@(?:HW|N|TITLE|STEM)@")
+
+
+def unfinished(files: list[Path]) -> list[str]:
+    """``file:line: text`` for every TODO or placeholder in the notebooks and the package."""
+    hits = []
+    for path in files:
+        if path.suffix not in (".ipynb", ".py", ".md", ".yml"):
+            continue
+        for n, line in enumerate(path.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
+            if UNFINISHED.search(line):
+                hits.append(f"{path.relative_to(ROOT)}:{n}: {line.strip()[:100]}")
+    return hits
+
+
+def _student_environment(text: str) -> str:
+    """environment.yml for students: the course's runtime only (no test suite, site, benchmark)."""
+    keep, skip = [], False
+    for line in text.splitlines():
+        stripped = line.strip()
+        if stripped.startswith("# Names and versions match"):
+            line = "# Names and versions match the course's pyproject.toml and constraints.txt."
+        if stripped in ("# the test suite", "# the website and the handouts (make site, make handouts)"):
+            skip = True
+            continue
+        if stripped == "- pip:":
+            skip = False
+        if skip or "bezier" in stripped or stripped.startswith("# benchmark-only") or stripped.startswith("# its C library"):
+            continue
+        keep.append(line)
+    return "\n".join(keep) + "\n"
+
+
 def build(out: Path) -> Path:
-    """Write the edition to ``out`` (replacing it) and ``out``.zip; return the zip's path."""
+    """Write the edition to ``out`` (replacing it) and ``out``.zip; return the zip's path.
+
+    Refuses (``SystemExit``) an edition with a TODO or a scaffold placeholder left in it."""
+    left = unfinished(edition_files())
+    if left:
+        raise SystemExit(
+            f"the student edition is not finished: {len(left)} TODO/placeholder(s) left, e.g.\n  "
+            + "\n  ".join(left[:10])
+        )
     if out.exists() and any(out.iterdir()):
         if not (out / MARK).is_file():  # never delete a folder this script did not write
             raise SystemExit(f"--out {out}: not empty and not an earlier student edition")
@@ -173,6 +230,8 @@ def build(out: Path) -> Path:
         dst.parent.mkdir(parents=True, exist_ok=True)
         if rel.as_posix() == "pyproject.toml":
             dst.write_text(_student_pyproject(src.read_text(encoding="utf-8")), encoding="utf-8")
+        elif rel.as_posix() == "environment.yml":
+            dst.write_text(_student_environment(src.read_text(encoding="utf-8")), encoding="utf-8")
         elif rel.as_posix() == WELCOME:
             dst.write_text(_student_welcome(src.read_text(encoding="utf-8")), encoding="utf-8")
         else:

@@ -13,12 +13,24 @@ Usage::
         # office hours: the student's code, their data and the worked answers
         # (``answers_for(data)`` of the hidden tests, solutions/hidden_tests/hw01.py)
 
-``STUDENT`` and the roster's ``id`` column are the ids the grader computes codes from
-(``tools/grade.py --secret-file --roster``: the roster's ``id`` of a submission, else the
-submission's name).
+``STUDENT`` and the roster id are the ids the grader computes codes from
+(``tools/grade.py --secret-file --roster``: the roster id of the submission's one identity).
+The roster is the course's CSV (``id`` column) or an LMS export as downloaded (Canvas's
+gradebook export: the SIS User ID; Moodle's grading worksheet or grades export: the ID number,
+else the e-mail) -- give ``codes`` and ``tools/grade.py`` the same file.  A code is 10
+characters without look-alikes, the last a check character (``course_lib.variants``).
 """
 
 from __future__ import annotations
+
+if __name__ == "__main__":  # run as printed (tools/grade.py ...): with the course's .venv if any
+    import os as _os
+    import sys as _sys
+    from pathlib import Path as _Path
+
+    _venv = _Path(__file__).resolve().parents[1] / ".venv"
+    if (_venv / "bin" / "python").is_file() and _Path(_sys.prefix).resolve() != _venv.resolve():
+        _os.execv(str(_venv / "bin" / "python"), [str(_venv / "bin" / "python"), *_sys.argv])
 
 import argparse
 import csv

@@ -25,9 +25,10 @@ import io
 import json
 import math
 import os
+import re
 import statistics
 import uuid
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from datetime import datetime, timezone
 from pathlib import Path
 
@@ -48,30 +49,113 @@ def atomic_write(path: Path, data: str | bytes) -> None:
 
 @dataclass(frozen=True)
 class RosterEntry:
-    key: str
-    id: str
+    key: str  # what a submission is matched on first (the ``submission`` column, else ``id``)
+    id: str  # the roster id: variant codes are made from it (tools/variant.py codes)
     name: str
     email: str
+    aliases: tuple[str, ...] = ()  # other ids that identify the student (LMS ids, SIS, e-mail)
+    names: tuple[str, ...] = ()  # other spellings of the name (Moodle's download folders)
+    row: dict = field(default_factory=dict)  # the LMS export's row, to write grades back
 
 
-def read_roster(path: Path) -> dict[str, RosterEntry]:
-    """A roster CSV: ``id`` (the LMS id) and optionally ``submission`` (the file/folder name or
-    the manifest's student id the submissions carry; defaults to ``id``), ``name``, ``email``."""
+class Roster(dict):
+    """``key -> RosterEntry``; ``kind`` is ``plain``, ``canvas``, ``moodle-worksheet`` or
+    ``moodle-grades`` (the export it was read from), ``fields`` that export's columns."""
+
+    kind = "plain"
+    fields: tuple[str, ...] = ()
+
+
+#: a Canvas gradebook export: these columns, then one per assignment; its second row is
+#: "Points Possible" (and newer exports add posting-policy rows): rows without an ID are skipped
+CANVAS_COLUMNS = ("Student", "ID", "SIS User ID", "SIS Login ID", "Section")
+
+
+def _kind(fields: list[str]) -> str:
+    names = {f.strip().lower() for f in fields}
+    if {"student", "id", "sis user id"} <= names:
+        return "canvas"
+    if "identifier" in names and "full name" in names:
+        return "moodle-worksheet"  # Moodle's assignment "grading worksheet"
+    if "email address" in names and ("first name" in names or "id number" in names):
+        return "moodle-grades"  # Moodle's gradebook export / participants list
+    return "plain"
+
+
+def read_roster(path: Path) -> Roster:
+    """A roster: the course's CSV, or an LMS export as downloaded.
+
+    * plain: ``id`` (the roster id) and optionally ``submission`` (the file/folder name or
+      manifest id the submissions carry), ``name``, ``email``;
+    * Canvas gradebook export (``Student, ID, SIS User ID, SIS Login ID, Section, ...``): the
+      roster id is the SIS User ID (else the SIS Login ID, else Canvas's ID); Canvas's user id
+      matches its "Download Submissions" files;
+    * Moodle grading worksheet (``Identifier, Full name, Email address, ...``): the roster id is
+      the ``ID number`` column when present, else the e-mail; ``Participant N`` matches Moodle's
+      download folders;
+    * Moodle grades export (``First name, Last name, ID number, ..., Email address``): the
+      roster id is the ID number, else the e-mail.
+    """
     with open(path, newline="", encoding="utf-8-sig") as fh:
         reader = csv.DictReader(fh)
-        fields = {f.strip().lower() for f in reader.fieldnames or []}
-        if "id" not in fields:
-            raise SystemExit(f"--roster {path}: needs an 'id' column (found {sorted(fields)})")
-        roster: dict[str, RosterEntry] = {}
-        for n, row in enumerate(reader, start=2):
-            row = {k.strip().lower(): (v or "").strip() for k, v in row.items() if k}
-            if not row.get("id"):
+        fields = [f for f in reader.fieldnames or []]
+        kind = _kind(fields)
+        if kind == "plain" and "id" not in {f.strip().lower() for f in fields}:
+            raise SystemExit(
+                f"--roster {path}: needs an 'id' column, or a Canvas/Moodle export "
+                f"(found {sorted(fields)})"
+            )
+        roster = Roster()
+        roster.kind, roster.fields = kind, tuple(fields)
+        for n, raw in enumerate(reader, start=2):
+            raw = {k.strip(): (v or "").strip() for k, v in raw.items() if k}
+            entry = _entry(kind, raw)
+            if entry is None:
+                continue
+            if not entry.id:
                 raise SystemExit(f"--roster {path}, line {n}: empty id")
-            key = row.get("submission") or row["id"]
-            if key in roster:
-                raise SystemExit(f"--roster {path}, line {n}: {key!r} appears twice")
-            roster[key] = RosterEntry(key, row["id"], row.get("name", ""), row.get("email", ""))
+            if entry.key in roster:
+                raise SystemExit(f"--roster {path}, line {n}: {entry.key!r} appears twice")
+            roster[entry.key] = entry
     return roster
+
+
+def _entry(kind: str, raw: dict) -> RosterEntry | None:
+    low = {k.lower(): v for k, v in raw.items()}
+    if kind == "canvas":
+        if not low.get("id") or low.get("student", "").startswith("Points Possible"):
+            return None  # "Points Possible", posting-policy rows: not students
+        rid = low.get("sis user id") or low.get("sis login id") or low["id"]
+        aliases = tuple(a for a in (low["id"], low.get("sis user id"), low.get("sis login id")) if a)
+        name = low.get("student", "")
+        return RosterEntry(rid, rid, name, "", aliases, _name_forms(name), raw)
+    if kind == "moodle-worksheet":
+        ident = low.get("identifier", "")
+        participant = re.sub(r"\D", "", ident)
+        email = low.get("email address", "")
+        rid = low.get("id number") or email or participant
+        aliases = tuple(a for a in (participant, email, low.get("id number")) if a)
+        name = low.get("full name", "")
+        return RosterEntry(rid, rid, name, email, aliases, (), raw)
+    if kind == "moodle-grades":
+        email = low.get("email address", "")
+        rid = low.get("id number") or email
+        name = f"{low.get('first name', '')} {low.get('last name', '')}".strip()
+        aliases = tuple(a for a in (email, low.get("id number")) if a)
+        return RosterEntry(rid, rid, name, email, aliases, (), raw)
+    if not low.get("id"):
+        return RosterEntry("", "", "", "")
+    key = low.get("submission") or low["id"]
+    return RosterEntry(key, low["id"], low.get("name", ""), low.get("email", ""), (), (), raw)
+
+
+def _name_forms(name: str) -> tuple[str, ...]:
+    """Canvas names download files ``lastfirst`` from its "Last, First" sortable name."""
+    if "," in name:
+        last, first = (p.strip() for p in name.split(",", 1))
+        return (f"{first} {last}", f"{last}{first}")
+    parts = name.split()
+    return (f"{parts[-1]}{''.join(parts[:-1])}",) if len(parts) > 1 else ()
 
 
 # ---------------------------------------------------------------------------- late rule
@@ -124,41 +208,80 @@ def final_total(r) -> float:
     return round(r.total * (1 - r.penalty), 2)
 
 
+def notes_text(r, tests) -> str:
+    """Per-question feedback in one line (Moodle's feedback column): points and the reason."""
+    parts = [f"{final_total(r):g}/{tests.max_points:g}"]
+    for q in tests.points:
+        if tests.points[q] == 0:
+            continue
+        note = r.notes.get(q, "").replace("\n", " ").strip()
+        mark = "✓" if r.right(q, tests.points[q]) else (note or "wrong answer")
+        parts.append(f"{q} {r.points[q]:g}/{tests.points[q]:g} {mark}")
+    if r.penalty:
+        parts.append(f"late: {r.penalty:.0%} off")
+    return "; ".join(parts)
+
+
+def _canvas_assignment(roster, assignment: str) -> str:
+    """The assignment's column as the Canvas export names it (``hw03 (4711)``), else its name."""
+    for f in getattr(roster, "fields", ()):
+        if f.strip().lower() == assignment.lower() or f.strip().lower().startswith(assignment.lower() + " ("):
+            return f
+    return assignment
+
+
 def scores_table(
     results, tests, fmt: str, roster: dict[str, RosterEntry] | None, assignment: str
 ) -> str:
+    """``scores.csv`` in ``fmt``.  The Canvas and Moodle layouts are import files: a row whose
+    submission matched no roster entry is never in them (the summary lists it)."""
     questions = list(tests.points)
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     rows = sorted(results, key=lambda r: r.student)
+    matched = [r for r in rows if r.lms]
+    kind = getattr(roster, "kind", "plain")
+    if fmt in ("canvas", "moodle") and roster is None:
+        matched = rows  # no roster: the submission's own name is all there is
     if fmt == "canvas":
-        w.writerow(["Student", "ID", "SIS User ID", "SIS Login ID", "Section", assignment])
+        column = _canvas_assignment(roster, assignment)
+        w.writerow([*CANVAS_COLUMNS, column])
         w.writerow(["    Points Possible", "", "", "", "", f"{tests.max_points:g}"])
-        for r in rows:
-            e = r.lms
-            w.writerow(
-                [
-                    e["name"] if e else r.student,
-                    e["id"] if e else "",
-                    "",
-                    "",
-                    "",
-                    f"{final_total(r):g}",
-                ]
-            )
+        for r in matched:
+            e = r.lms or {}
+            row = e.get("row") or {}
+            if kind == "canvas":  # Canvas's own ids, exactly as exported
+                ids = [row.get("Student", ""), row.get("ID", ""), row.get("SIS User ID", ""),
+                       row.get("SIS Login ID", ""), row.get("Section", "")]  # fmt: skip
+            else:  # a course roster: its id is the SIS User ID Canvas matches on
+                ids = [e.get("name") or r.student, "", e.get("id", r.student), "", ""]
+            w.writerow([*ids, f"{final_total(r):g}"])
     elif fmt == "moodle":
-        w.writerow(["ID number", "Email address", "Full name", assignment, "Feedback"])
-        for r in rows:
-            e = r.lms
-            w.writerow(
-                [
-                    e["id"] if e else r.student,
-                    e["email"] if e else "",
-                    e["name"] if e else "",
-                    f"{final_total(r):g}",
-                    f"{final_total(r):g}/{tests.max_points:g}; {r.status}",
-                ]
-            )
+        if kind == "moodle-worksheet":  # Moodle's grading worksheet, filled in: upload it back
+            fields = list(roster.fields)
+            for extra in ("Grade", "Feedback comments"):
+                if extra not in fields:
+                    fields.append(extra)
+            w.writerow(fields)
+            for r in matched:
+                row = dict(r.lms.get("row") or {})
+                row["Grade"] = f"{final_total(r):g}"
+                row["Feedback comments"] = notes_text(r, tests)
+                w.writerow([row.get(f, "") for f in fields])
+        else:  # Moodle's grade import: map "ID number" (or "Email address") to the user
+            w.writerow(["ID number", "Email address", "Full name", assignment, "Feedback"])
+            for r in matched:
+                e = r.lms or {}
+                row = e.get("row") or {}
+                w.writerow(
+                    [
+                        row.get("ID number", e.get("id", r.student)),
+                        e.get("email", ""),
+                        e.get("name", ""),
+                        f"{final_total(r):g}",
+                        notes_text(r, tests),
+                    ]
+                )
     else:
         lms = ["id", "name", "email"] if roster is not None else []
         w.writerow(
@@ -237,12 +360,43 @@ def variant_spread(results, tests, labels: dict[str, dict[str, str]]) -> dict[st
     return out
 
 
+#: the flags of the status column, in the order an instructor acts on them (identity.py)
+ACT_ON = (
+    ("not in the roster", "Not in the roster (not in the import file; resolve by hand, then `--only`)"),
+    ("edited after submit", "Edited after submit() (checksum mismatch)"),
+    ("manifest id differs", "The submit() manifest names another roster student"),
+    ("manifest time disagrees", "The submit() manifest's time disagrees with the LMS/file time"),
+    ("wrong variant code", "Wrong variant code (whose code: see the feedback)"),
+    ("shared variant code", "The same variant code in several notebooks"),
+    ("no variant code", "No variant code in the notebook (graded on their own data)"),
+    ("late", "Late"),
+    ("several notebooks", "Several notebooks (the newest graded)"),
+)
+
+
+def flags_of(r) -> list[str]:
+    return [p.strip() for p in r.status.split(";")[1:]]
+
+
+def _who(r) -> str:
+    e = r.lms or {}
+    name = e.get("name") or ""
+    ident = e.get("id") or r.student
+    return f"{ident} ({name})" if name and name != ident else ident
+
+
 def summary(
     results,
     tests,
     roster: dict[str, RosterEntry] | None,
     labels: dict[str, dict[str, str]] | None = None,
 ) -> tuple[str, dict]:
+    """The class summary: what to act on first (flags, missing students), then statistics
+    over the class (roster students only when there is a roster; not-graded rows never)."""
+    listed = list(results)
+    results = [r for r in listed if not r.status.startswith("not graded")]
+    if roster is not None:
+        results = [r for r in results if r.lms]
     totals = [final_total(r) for r in results]
     rates = {
         q: (
@@ -260,12 +414,35 @@ def summary(
         "mean": round(statistics.fmean(totals), 2) if totals else None,
         "median": round(statistics.median(totals), 2) if totals else None,
         "success_rate": {q: round(v, 3) for q, v in rates.items()},
-        "unsandboxed": sum(1 for r in results if r.sandbox != "bwrap"),
+        "unsandboxed": sum(1 for r in listed if r.sandbox != "bwrap"),
     }
-    lines = [
-        f"# {tests.homework}: class summary",
+    lines = [f"# {tests.homework}: class summary", "", "## Act on these first", ""]
+    flagged: dict[str, list[str]] = {}
+    for flag, title in ACT_ON:
+        who = sorted(_who(r) for r in listed if flag in flags_of(r))
+        flagged[flag] = who
+        if who:
+            lines.append(f"- **{title}** ({len(who)}): " + ", ".join(who))
+    if roster is not None:
+        seen = {r.lms["id"] for r in listed if r.lms}
+        unknown = sorted(r.student for r in listed if not r.lms)
+        missing = sorted(e.id for e in roster.values() if e.id not in seen)
+        data["not_in_roster"], data["no_submission"] = unknown, missing
+        lines += [
+            f"- Submissions not in the roster ({len(unknown)}): " + (", ".join(unknown) or "none"),
+            f"- Roster students without a submission ({len(missing)}): "
+            + (", ".join(missing) or "none"),
+        ]
+    elif not any(flagged.values()):
+        lines.append("- nothing flagged")
+    data["flags"] = {k: v for k, v in flagged.items() if v}
+    lines += [
         "",
-        f"{len(results)} submissions; maximum {tests.max_points:g} points.",
+        "## Statistics",
+        "",
+        f"{len(results)} submissions graded"
+        + (" (roster students)" if roster is not None else "")
+        + f"; maximum {tests.max_points:g} points.",
     ]
     if totals:
         lines.append(f"Mean {data['mean']:g}, median {data['median']:g}.")
@@ -275,20 +452,10 @@ def summary(
         f"| {rates[q]:.0%} |"
         for q in tests.points
     ]
-    if roster is not None:
-        seen = {r.lms["id"] for r in results if r.lms}
-        unknown = sorted(r.student for r in results if not r.lms)
-        missing = sorted(e.id for e in roster.values() if e.id not in seen)
-        data["not_in_roster"], data["no_submission"] = unknown, missing
-        lines += [
-            "",
-            f"Submissions not in the roster ({len(unknown)}): " + (", ".join(unknown) or "none"),
-            f"Roster students without a submission ({len(missing)}): "
-            + (", ".join(missing) or "none"),
-        ]
     if labels:
         spread = variant_spread(results, tests, labels)
         data["variants"] = spread
+    if labels and any(len(info["rates"]) > 1 for info in spread.values()):
         lines += [
             "",
             "## Per-student variants",
@@ -301,6 +468,8 @@ def summary(
             "|---|---|---|",
         ]
         for q, info in spread.items():
+            if len(info["rates"]) < 2:
+                continue
             kinds = "; ".join(f"{k}: {r:.0%} ({n})" for k, (r, n) in info["rates"].items())
             lines.append(f"| {q} | {kinds} | {'⚠' if info['flagged'] else ''} |")
     if data["unsandboxed"]:

@@ -1,0 +1,286 @@
+"""Who handed a submission in, and what the instructor should know about it.
+
+One identity per submission: it picks the roster row, the variant, the feedback file and the
+gradebook row.  It is read, in this order of trust, from
+
+1. the LMS's own download naming (the LMS recorded who uploaded the file):
+
+   * Canvas, "Download Submissions": ``<name>_[LATE_]<canvas user id>_<submission id>_<file>``
+     (``doejane_LATE_12345_67890_hw03-1001.ipynb``; ``LATE`` is Canvas's own late mark; a
+     resubmission's file may carry ``-1``, ``-2`` before its extension);
+   * Moodle, "Download all submissions": a folder ``<Full Name>_<participant id>_assignsubmission_file_``
+     holding the file, or the flattened ``<Full Name>_<participant id>_assignsubmission_file_<file>``;
+
+2. the file or folder name (``alice.ipynb``, ``alice/hw03.ipynb``; submit()'s
+   ``hw03-1001.ipynb`` names student ``1001``);
+3. the student id in the ``submit()`` manifest -- written on the student's machine, so it is
+   used only when nothing else matches, and a manifest that names another roster student than
+   the LMS/file match is flagged.
+
+Flags are honest statements, never silent: they go into the status column, the feedback notes
+and the class summary (:data:`FLAGS`).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from datetime import datetime, timedelta, timezone
+from pathlib import Path
+
+import nbformat
+
+from course_lib.submit import manifest_of
+
+#: the flags an instructor acts on, as they appear in the status column (``ok; late; ...``)
+EDITED = "edited after submit"
+TIMES_DISAGREE = "manifest time disagrees"
+ID_DIFFERS = "manifest id differs"
+SEVERAL = "several notebooks"
+LATE = "late"
+NOT_IN_ROSTER = "not in the roster"
+WRONG_CODE = "wrong variant code"
+NO_CODE = "no variant code"
+SHARED_CODE = "shared variant code"
+FLAGS = (NOT_IN_ROSTER, EDITED, ID_DIFFERS, TIMES_DISAGREE, LATE, SEVERAL, WRONG_CODE,
+         SHARED_CODE, NO_CODE)  # fmt: skip
+
+#: a manifest time more than this after the file's own time cannot be true
+CLOCK_SLACK_SECONDS = 600
+MAX_NOTEBOOK_BYTES = 64 << 20  # larger files are not read here (the grader reports them)
+
+_CANVAS = re.compile(
+    r"^(?P<name>[a-z0-9-]+?)_(?:(?P<late>LATE)_)?(?P<uid>\d+)_(?P<sid>\d+)_(?P<file>.+)$"
+)
+_MOODLE_DIR = re.compile(r"^(?P<name>.+?)_(?P<pid>\d+)_assignsubmission_file_?$")
+_MOODLE_FLAT = re.compile(r"^(?P<name>.+?)_(?P<pid>\d+)_assignsubmission_file_(?P<file>.+)$")
+_SUBMIT_NAME = re.compile(r"^hw\d+-(?P<id>[A-Za-z0-9][A-Za-z0-9._@-]*?)(?:-\d+)?$")
+_VARIANT = re.compile(r"^VARIANT\s*=\s*([\"'])(?P<code>[^\"'\n]*)\1", re.M)
+
+
+@dataclass
+class Found:
+    """One notebook and what its name, the LMS and its manifest say about its author."""
+
+    path: Path
+    rel: str  # path relative to the submissions folder (posix)
+    lms: str = "file"  # "canvas", "moodle" or "file": who named the file
+    lms_id: str = ""  # Canvas user id / Moodle participant id
+    lms_name: str = ""  # the LMS's name of the student (Canvas: "doejane"; Moodle: full name)
+    lms_late: bool | None = None  # the LMS's own late mark (Canvas), None if it has none
+    names: list[str] = field(default_factory=list)  # ids the file/folder name gives
+    manifest: dict | None = None  # course_lib.submit.manifest_of, or None
+    mtime: datetime | None = None
+    variant_used: str | None = None  # the VARIANT written in the notebook (None: none found)
+
+    @property
+    def manifest_time(self) -> datetime | None:
+        return self.manifest["time"] if self.manifest else None
+
+    def order(self) -> tuple:
+        """Newest submission last: a valid manifest's time, else the file's time."""
+        valid = self.manifest is not None and not self.manifest["tampered"]
+        when = self.manifest_time if valid else self.mtime
+        return (when or datetime.min.replace(tzinfo=timezone.utc), self.rel)
+
+
+def parse_name(rel: Path) -> Found:
+    """What the file's path says: LMS naming (Canvas, Moodle) or a plain file/folder name."""
+    f = Found(Path(), rel.as_posix())
+    top = rel.parts[0]
+    if len(rel.parts) == 1:
+        m = _CANVAS.match(top)
+        if m:
+            f.lms, f.lms_id, f.lms_name = "canvas", m["uid"], m["name"]
+            f.lms_late = bool(m["late"])
+            f.names = _submit_names(Path(m["file"]).stem)
+            return f
+        m = _MOODLE_FLAT.match(top)
+        if m:
+            f.lms, f.lms_id, f.lms_name = "moodle", m["pid"], m["name"]
+            f.names = _submit_names(Path(m["file"]).stem)
+            return f
+        f.names = [rel.stem, *_submit_names(rel.stem)]
+        return f
+    m = _MOODLE_DIR.match(top)
+    if m:
+        f.lms, f.lms_id, f.lms_name = "moodle", m["pid"], m["name"]
+        f.names = _submit_names(Path(rel.parts[-1]).stem)
+        return f
+    f.names = [top]
+    return f
+
+
+def _submit_names(stem: str) -> list[str]:
+    """submit() writes ``hw03-<id>.ipynb`` (an LMS may append ``-1`` to a resubmission)."""
+    m = _SUBMIT_NAME.match(stem)
+    return [m["id"]] if m else []
+
+
+def read_notebook_facts(found: Found) -> Found:
+    """The manifest, the file time and the ``VARIANT`` written in the notebook (never raises)."""
+    try:
+        st = found.path.stat()
+        found.mtime = datetime.fromtimestamp(st.st_mtime, tz=timezone.utc)
+        if st.st_size > MAX_NOTEBOOK_BYTES:
+            return found
+        text = found.path.read_text(encoding="utf-8")
+        nb = nbformat.reads(text, as_version=4)  # the form submit() computed its digest on
+    except Exception:  # unreadable or not a notebook: the grader reports it
+        return found
+    try:
+        found.manifest = manifest_of(nb)
+    except Exception:  # a hostile manifest is no manifest
+        found.manifest = None
+    for cell in nb.get("cells", []) if isinstance(nb.get("cells"), list) else []:
+        if isinstance(cell, dict) and cell.get("cell_type") == "code":
+            src = cell.get("source", "")
+            src = "".join(src) if isinstance(src, list) else str(src)
+            m = _VARIANT.search(src)
+            if m:
+                found.variant_used = m["code"]
+                break
+    return found
+
+
+def discover(folder: Path) -> list[Found]:
+    """Every notebook under ``folder`` (hidden folders and checkpoints skipped), with its facts."""
+    out = []
+    for f in sorted(folder.rglob("*.ipynb")):
+        rel = f.relative_to(folder)
+        if ".ipynb_checkpoints" in rel.parts or any(p.startswith(".") for p in rel.parts):
+            continue
+        if f.is_symlink() or not f.is_file():
+            continue
+        found = parse_name(rel)
+        found.path = f
+        out.append(read_notebook_facts(found))
+    return out
+
+
+class RosterIndex:
+    """Every identifier of every roster entry -> the entry (ids, LMS ids, emails, names)."""
+
+    def __init__(self, roster: dict) -> None:
+        self.by_id: dict[str, object] = {}
+        self.by_name: dict[str, list] = {}
+        for entry in roster.values():
+            for key in (entry.key, entry.id, *entry.aliases):
+                if key:
+                    self.by_id.setdefault(key.strip().lower(), entry)
+            for name in (entry.name, *entry.names):
+                if name:
+                    self.by_name.setdefault(_name_key(name), []).append(entry)
+
+    def get(self, key: str | None):
+        return self.by_id.get(key.strip().lower()) if key else None
+
+    def by_full_name(self, name: str):
+        hits = self.by_name.get(_name_key(name), [])
+        return hits[0] if len(hits) == 1 else None
+
+
+def _name_key(name: str) -> str:
+    return re.sub(r"[^a-z0-9]", "", name.lower())
+
+
+@dataclass
+class Identity:
+    """Who a submission belongs to: the row key, the roster entry (if any), how it was found."""
+
+    student: str
+    entry: object | None
+    how: str  # "lms", "name", "manifest"
+    notes: list[str] = field(default_factory=list)
+    flags: list[str] = field(default_factory=list)
+
+
+def identify(found: Found, index: RosterIndex | None) -> Identity:
+    """The one identity of a submission (see the module docstring for the order of trust)."""
+    manifest_id = found.manifest["student"] if found.manifest else None
+    if index is None:
+        if found.lms != "file":
+            student = found.names[0] if found.names else f"{found.lms_name}_{found.lms_id}"
+            how = "lms"
+        elif found.names:
+            student, how = found.names[-1] if len(found.names) > 1 else found.names[0], "name"
+        else:
+            student, how = manifest_id or found.rel, "manifest"
+        ident = Identity(student, None, how)
+        if manifest_id and manifest_id != student:
+            ident.notes.append(f"the submission's manifest names student {manifest_id!r}")
+        return ident
+    entry, how = None, ""
+    if found.lms != "file":
+        entry = index.get(found.lms_id)
+        if entry is None and found.lms == "moodle":
+            entry = index.by_full_name(found.lms_name)
+        how = "lms" if entry is not None else ""
+    if entry is None:
+        for name in found.names:
+            entry = index.get(name)
+            if entry is not None:
+                how = "name"
+                break
+    if entry is None and manifest_id:
+        entry = index.get(manifest_id)
+        how = "manifest" if entry is not None else ""
+    if entry is None:
+        label = found.names[-1] if found.names else (found.lms_name or found.rel)
+        if found.lms != "file":
+            label = f"{found.lms_name}_{found.lms_id}"
+        ident = Identity(label, None, "", flags=[NOT_IN_ROSTER])
+        ident.notes.append(
+            f"not in the roster ({found.rel}): map this submission to a student by hand"
+        )
+        return ident
+    ident = Identity(entry.key, entry, how)
+    if manifest_id and how != "manifest":
+        other = index.get(manifest_id)
+        source = "LMS" if how == "lms" else "file name"
+        if other is not None and other is not entry:  # another roster student's submit()
+            ident.flags.append(ID_DIFFERS)
+            ident.notes.append(
+                f"the submit() manifest names roster student {other.id} ({manifest_id!r}), but "
+                f"the {source} says {entry.id}: graded as {entry.id}"
+            )
+        elif other is None:  # another form of id (an e-mail, a login): noted, not flagged
+            ident.notes.append(
+                f"the submit() manifest names student {manifest_id!r}; the {source} says {entry.id}"
+            )
+    return ident
+
+
+def time_flags(found: Found, deadline: datetime | None) -> tuple[datetime | None, str, list[str], list[str]]:
+    """``(submission time, its source, flags, notes)``: the LMS's record, else the file's time.
+
+    The manifest's time is written on the student's machine: it is never used alone, only
+    compared with the trusted time, and a disagreement is flagged.
+    """
+    flags, notes = [], []
+    when, source = found.mtime, "file time"
+    m_time = found.manifest_time
+    if found.lms_late is not None and deadline is not None:
+        source = "Canvas: late" if found.lms_late else "Canvas: on time"
+        if found.lms_late:  # late by the file's time, and at least one started day
+            later = deadline + timedelta(seconds=1)
+            when = found.mtime if found.mtime and found.mtime > later else later
+        else:
+            when = min(found.mtime, deadline) if found.mtime else deadline
+        if m_time is not None and (m_time > deadline) != found.lms_late:
+            flags.append(TIMES_DISAGREE)
+            notes.append(
+                f"the submit() manifest says {m_time.isoformat(timespec='seconds')}, but "
+                f"Canvas marked the upload {'late' if found.lms_late else 'on time'}"
+            )
+        return when, source, flags, notes
+    if m_time is not None and found.mtime is not None:
+        ahead = (m_time - found.mtime).total_seconds() > CLOCK_SLACK_SECONDS
+        sides = deadline is not None and (m_time > deadline) != (found.mtime > deadline)
+        if ahead or sides:
+            flags.append(TIMES_DISAGREE)
+            notes.append(
+                f"the submit() manifest says {m_time.isoformat(timespec='seconds')}, the file's "
+                f"time is {found.mtime.isoformat(timespec='seconds')}: the file's time is used"
+            )
+    return when, source, flags, notes
