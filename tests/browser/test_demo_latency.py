@@ -17,7 +17,9 @@ After each interaction it waits until the demo is quiet, so every sample is one 
 idle demo.  The medians go to ``test-artifacts/demo-latency.json`` and ``.md``.
 
 It is a benchmark, not a timed assertion: the only assertions are that every input produced a
-new picture and that a released point lands under the mouse (within 1.5 px).
+new picture (waits are generous: how soon is measured, never asserted) and that a released point
+lands under the mouse (within 1.5 px of where the mouseup happened on the canvas, whatever the
+load; how far the canvas moved in the page during the drag is reported).
 """
 
 from __future__ import annotations
@@ -54,6 +56,13 @@ INIT_JS = """(() => {
   window.__clInput = 0;
   for (const type of ['keydown', 'mousemove', 'mousedown', 'mouseup'])
     window.addEventListener(type, () => { window.__clInput = performance.now(); }, true);
+  // where the mouse was released, relative to the canvas it was released on (CSS px), taken
+  // at the event: what the demo must put the point under, even if the page moved meanwhile
+  window.__clUp = null;
+  window.addEventListener('mouseup', (e) => {
+    const r = e.target.getBoundingClientRect();
+    window.__clUp = {x: e.clientX - r.left, y: e.clientY - r.top, canvas: e.target.tagName};
+  }, true);
 })();"""
 
 # ms from input time t0 to the first frame painted inside `sel` after it (null: none yet)
@@ -108,7 +117,8 @@ def quiet(page, sel: str, timeout: float = 10.0) -> None:
 def latency(page, sel: str) -> float:
     """ms from the last input event to the first new frame on ``sel``'s canvas."""
     t0 = page.evaluate("() => window.__clInput")
-    ms = page.wait_for_function(FIRST_DRAW_JS, arg=[sel, t0], polling=10, timeout=20_000)
+    # generous: a frame must come (that is asserted), how soon is measured, not asserted
+    ms = page.wait_for_function(FIRST_DRAW_JS, arg=[sel, t0], polling=10, timeout=180_000)
     return float(ms.json_value())
 
 
@@ -146,10 +156,10 @@ def bench_page(chromium_path, tmp_path_factory, request):
         context, page, _log = new_page(browser, width=1400, height=1000)
         page.add_init_script(INIT_JS)
         page.goto(f"{server.url}/lab/tree/{NOTEBOOK.name}?reset&token={server.token}")
-        expect(page.locator("#jp-main-statusbar")).to_contain_text("| Idle", timeout=90_000)
+        expect(page.locator("#jp-main-statusbar")).to_contain_text("| Idle", timeout=300_000)
         page.locator(".lm-MenuBar-item", has_text="Run").click()
         page.locator('.lm-Menu-item[data-command="runmenu:run-all"]').click()
-        state = page.wait_for_function(RUN_STATE_JS, polling=250, timeout=120_000).json_value()
+        state = page.wait_for_function(RUN_STATE_JS, polling=250, timeout=600_000).json_value()
         assert state is True, state
         kernel(page, GEO)
         yield page
@@ -168,7 +178,7 @@ def _slider(demo):
     raise AssertionError("no slider in the demo")
 
 
-@pytest.mark.timeout(300)
+@pytest.mark.timeout(1800)  # a hang guard only: on a loaded machine this test is slow, not wrong
 def test_input_to_canvas_latency(bench_page, artifacts):
     page = bench_page
     load0 = os.getloadavg()
@@ -178,7 +188,7 @@ def test_input_to_canvas_latency(bench_page, artifacts):
         demo = page.locator(sel)
         demo.scroll_into_view_if_needed()
         canvas = demo.locator(".jupyter-matplotlib-canvas-div canvas").first
-        canvas.wait_for(state="visible", timeout=30_000)
+        canvas.wait_for(state="visible", timeout=120_000)
         quiet(page, sel)
         # -- slider: arrow keys, alternating so the value stays in range
         ssel, handle = _slider(demo)
@@ -209,16 +219,24 @@ def test_input_to_canvas_latency(bench_page, artifacts):
             quiet(page, sel)
         settle = fast_drag_and_release(page, sel, box["x"] + px, box["y"] + py, -2.0)
         px -= 30
+        up = page.evaluate("() => window.__clUp")
         moves = kernel(page, f"m = BENCH[{name!r}].dragger.moves; print(m.calls, m.dropped)")
         calls, dropped = (int(v) for v in moves.split())
         page.wait_for_timeout(200)
         nx, ny = json.loads(kernel(page, f"print(_cl_geo({name!r}))"))["points"][k]
-        err = round(max(abs(nx - px), abs(ny - py)), 1)
+        # Behaviour, not timing: the point is under the mouse where it was released *on the
+        # canvas* (the page may scroll or reflow during a drag on a busy machine: the box
+        # measured before the drag would then be stale; its drift is reported, not asserted).
+        assert up is not None and up["canvas"] == "CANVAS", up
+        err = round(max(abs(nx - up["x"]), abs(ny - up["y"])), 1)
         assert err <= 1.5, (
-            f"{name}: released at ({px:.1f}, {py:.1f}) px, the point is at ({nx:.1f}, {ny:.1f})")
+            f"{name}: released at ({up['x']:.1f}, {up['y']:.1f}) px on the canvas, "
+            f"the point is at ({nx:.1f}, {ny:.1f})")
+        drift = round(max(abs(up["x"] - px), abs(up["y"] - py)), 1)
         rows[name] = {"slider": median(slider), "slider control": ssel, "drag": median(drag),
                       "fast drag: release to final frame": settle,
-                      "released point: px from the mouse": err, "n": N,
+                      "released point: px from the mouse": err,
+                      "canvas moved during the drag (px)": drift, "n": N,
                       "moves handled / dropped as stale (whole test)": [calls, dropped],
                       "slider samples": [round(x, 1) for x in slider],
                       "drag samples": [round(x, 1) for x in drag]}
@@ -227,7 +245,7 @@ def test_input_to_canvas_latency(bench_page, artifacts):
     sel = ".cl-bench-patches"
     fig = page.locator(sel).first
     fig.scroll_into_view_if_needed()
-    fig.locator("canvas").first.wait_for(state="visible", timeout=30_000)
+    fig.locator("canvas").first.wait_for(state="visible", timeout=120_000)
     quiet(page, sel)
     box = fig.locator(".jupyter-matplotlib-canvas-div").first.bounding_box()
     x, y = box["x"] + box["width"] * 0.25, box["y"] + box["height"] * 0.5
