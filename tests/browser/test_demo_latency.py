@@ -31,7 +31,7 @@ import time
 from pathlib import Path
 
 import pytest
-from browser_harness import RUN_STATE_JS, kernel, make_server, new_page
+from browser_harness import RUN_STATE_JS, WAIT_MS, kernel, make_server, new_page
 
 HERE = Path(__file__).resolve().parent
 NOTEBOOK = HERE / "fixtures" / "all_demos.ipynb"
@@ -118,7 +118,7 @@ def latency(page, sel: str) -> float:
     """ms from the last input event to the first new frame on ``sel``'s canvas."""
     t0 = page.evaluate("() => window.__clInput")
     # generous: a frame must come (that is asserted), how soon is measured, not asserted
-    ms = page.wait_for_function(FIRST_DRAW_JS, arg=[sel, t0], polling=10, timeout=180_000)
+    ms = page.wait_for_function(FIRST_DRAW_JS, arg=[sel, t0], polling=10, timeout=WAIT_MS)
     return float(ms.json_value())
 
 
@@ -156,10 +156,10 @@ def bench_page(chromium_path, tmp_path_factory, request):
         context, page, _log = new_page(browser, width=1400, height=1000)
         page.add_init_script(INIT_JS)
         page.goto(f"{server.url}/lab/tree/{NOTEBOOK.name}?reset&token={server.token}")
-        expect(page.locator("#jp-main-statusbar")).to_contain_text("| Idle", timeout=300_000)
+        expect(page.locator("#jp-main-statusbar")).to_contain_text("| Idle", timeout=WAIT_MS)
         page.locator(".lm-MenuBar-item", has_text="Run").click()
         page.locator('.lm-Menu-item[data-command="runmenu:run-all"]').click()
-        state = page.wait_for_function(RUN_STATE_JS, polling=250, timeout=600_000).json_value()
+        state = page.wait_for_function(RUN_STATE_JS, polling=250, timeout=WAIT_MS).json_value()
         assert state is True, state
         kernel(page, GEO)
         yield page
@@ -188,7 +188,7 @@ def test_input_to_canvas_latency(bench_page, artifacts):
         demo = page.locator(sel)
         demo.scroll_into_view_if_needed()
         canvas = demo.locator(".jupyter-matplotlib-canvas-div canvas").first
-        canvas.wait_for(state="visible", timeout=120_000)
+        canvas.wait_for(state="visible", timeout=WAIT_MS)
         quiet(page, sel)
         # -- slider: arrow keys, alternating so the value stays in range
         ssel, handle = _slider(demo)
@@ -245,7 +245,7 @@ def test_input_to_canvas_latency(bench_page, artifacts):
     sel = ".cl-bench-patches"
     fig = page.locator(sel).first
     fig.scroll_into_view_if_needed()
-    fig.locator("canvas").first.wait_for(state="visible", timeout=120_000)
+    fig.locator("canvas").first.wait_for(state="visible", timeout=WAIT_MS)
     quiet(page, sel)
     box = fig.locator(".jupyter-matplotlib-canvas-div").first.bounding_box()
     x, y = box["x"] + box["width"] * 0.25, box["y"] + box["height"] * 0.5
