@@ -31,7 +31,7 @@ import time
 from pathlib import Path
 
 import pytest
-from browser_harness import RUN_STATE_JS, WAIT_MS, kernel, make_server, new_page
+from browser_harness import RUN_STATE_JS, WAIT_MS, WAIT_S, kernel, make_server, new_page
 
 HERE = Path(__file__).resolve().parent
 NOTEBOOK = HERE / "fixtures" / "all_demos.ipynb"
@@ -61,7 +61,8 @@ INIT_JS = """(() => {
   window.__clUp = null;
   window.addEventListener('mouseup', (e) => {
     const r = e.target.getBoundingClientRect();
-    window.__clUp = {x: e.clientX - r.left, y: e.clientY - r.top, canvas: e.target.tagName};
+    window.__clUp = {x: e.clientX - r.left, y: e.clientY - r.top, canvas: e.target.tagName,
+                     t: performance.now()};
   }, true);
 })();"""
 
@@ -123,7 +124,7 @@ def latency(page, sel: str) -> float:
 
 
 def fast_drag_and_release(page, sel: str, x: float, y: float, dx: float,
-                          moves: int = 15) -> float:
+                          moves: int = 15, name: str | None = None) -> float:
     """Move the (held) mouse ``moves`` times, one move every 33 ms as a hand does, release at
     once, without waiting for pictures; return the ms from the release to the last new frame
     (what queued up in the kernel, and the final frame; negative: no frame after release)."""
@@ -131,11 +132,30 @@ def fast_drag_and_release(page, sel: str, x: float, y: float, dx: float,
         page.mouse.move(x + dx * (i + 1), y)
         if i < moves - 1:  # the hand lets go right after its last move
             page.wait_for_timeout(33)
+    page.evaluate("() => { window.__clUp = null; }")
     page.mouse.up()
-    t_up = page.evaluate("() => window.__clInput")
+    # On a busy machine the page may still be dispatching queued moves when mouse.up()
+    # returns: wait for the mouseup itself, then (a demo) for the kernel to have handled it
+    # (the kernel reads comm messages and our requests in no guaranteed order: a state read
+    # too early sees a point the release has not reached yet).
+    t_up = page.wait_for_function("() => window.__clUp && window.__clUp.t",
+                                  timeout=WAIT_MS).json_value()
+    if name is not None:
+        released(page, name)
     page.wait_for_timeout(QUIET_MS)
     quiet(page, sel, timeout=30)
     return round(page.evaluate(LAST_DRAW_JS, sel) - t_up, 1)
+
+
+def released(page, name: str) -> None:
+    """Wait until the kernel has handled the mouse release of demo ``name`` (its dragger
+    holds no point).  A hang guard only (WAIT_S): how long it takes is not asserted."""
+    deadline = time.monotonic() + WAIT_S
+    while kernel(page, f"print(BENCH[{name!r}].dragger.active is None)").strip() != "True":
+        if time.monotonic() > deadline:
+            raise AssertionError(f"{name}: the kernel did not handle the mouse release "
+                                 f"within {WAIT_S:.0f} s")
+        page.wait_for_timeout(100)
 
 
 def median(xs):
@@ -217,7 +237,8 @@ def test_input_to_canvas_latency(bench_page, artifacts):
             page.mouse.move(box["x"] + px, box["y"] + py)
             drag.append(latency(page, sel))
             quiet(page, sel)
-        settle = fast_drag_and_release(page, sel, box["x"] + px, box["y"] + py, -2.0)
+        settle = fast_drag_and_release(page, sel, box["x"] + px, box["y"] + py, -2.0,
+                                       name=name)
         px -= 30
         up = page.evaluate("() => window.__clUp")
         moves = kernel(page, f"m = BENCH[{name!r}].dragger.moves; print(m.calls, m.dropped)")
