@@ -127,7 +127,7 @@ def fast_drag_and_release(page, sel: str, x: float, y: float, dx: float,
                           moves: int = 15, name: str | None = None) -> float:
     """Move the (held) mouse ``moves`` times, one move every 33 ms as a hand does, release at
     once, without waiting for pictures; return the ms from the release to the last new frame
-    (what queued up in the kernel, and the final frame; negative: no frame after release)."""
+    (what queued up in the kernel, and the final frame)."""
     for i in range(moves):
         page.mouse.move(x + dx * (i + 1), y)
         if i < moves - 1:  # the hand lets go right after its last move
@@ -142,6 +142,8 @@ def fast_drag_and_release(page, sel: str, x: float, y: float, dx: float,
                                   timeout=WAIT_MS).json_value()
     if name is not None:
         released(page, name)
+    # the release sends a complete picture: wait for it (behaviour), then for the quiet
+    page.wait_for_function(FIRST_DRAW_JS, arg=[sel, t_up], polling=10, timeout=WAIT_MS)
     page.wait_for_timeout(QUIET_MS)
     quiet(page, sel, timeout=30)
     return round(page.evaluate(LAST_DRAW_JS, sel) - t_up, 1)
