@@ -15,7 +15,9 @@ Reading
   nothing) are skipped and counted; zero-length segments (repeated points) are dropped.
 * :func:`svg_outline` -- SVG path data (``d`` strings: ``M L H V C S Q T A Z``, absolute
   and relative), parsed by a strict scanner of the SVG 1.1 path grammar that names the
-  offending token and its position.  Elliptical arcs ``A`` are converted to cubics whose
+  offending token and its position, and read as a browser draws them: subpaths of one
+  point and closing lines within rounding of the path's size are dropped (they draw
+  nothing), no point is ever infinite.  Elliptical arcs ``A`` are converted to cubics whose
   distance from the true ellipse is at most ``arc_tolerance`` times its larger radius,
   or refused (``arcs="refuse"``).
 
