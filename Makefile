@@ -36,6 +36,7 @@ present: install
 test: install
 	@bash tools/ensure-browser || true
 	@bash tools/ensure-sandbox || true
+	@bash tools/ensure-test-data || true
 	$(BIN)/ruff check course_lib tests benchmarks tools conftest.py solutions/hidden_tests
 	$(BIN)/python -m pytest
 

@@ -15,7 +15,9 @@ Reading
   nothing) are skipped and counted; zero-length segments (repeated points) are dropped.
 * :func:`svg_outline` -- SVG path data (``d`` strings: ``M L H V C S Q T A Z``, absolute
   and relative), parsed by a strict scanner of the SVG 1.1 path grammar that names the
-  offending token and its position.  Elliptical arcs ``A`` are converted to cubics whose
+  offending token and its position, and read as a browser draws them: subpaths of one
+  point and closing lines within rounding of the path's size are dropped (they draw
+  nothing), no point is ever infinite.  Elliptical arcs ``A`` are converted to cubics whose
   distance from the true ellipse is at most ``arc_tolerance`` times its larger radius,
   or refused (``arcs="refuse"``).
 
@@ -124,7 +126,8 @@ class Outline:
         Units per drawing unit: ``units_per_em`` if the glyph was normalised to the em,
         else 1.
     skipped : int
-        One-point contours skipped while reading (TrueType anchors that draw nothing).
+        One-point contours skipped while reading (TrueType anchors, SVG subpaths of one
+        point: they draw nothing).
     points : tuple of (ndarray (n, 2), ndarray of bool (n,))
         For TrueType outlines: the raw points of each contour and their on-curve flags
         (the data :func:`truetype_outline` rebuilds the contours from); empty for SVG.
@@ -425,14 +428,24 @@ def svg_outline(
     -------
     Outline
         A subpath ending with ``Z``/``z`` is a closed contour (a closing line is added
-        when its last point differs from its start).  Zero-length segments are dropped.
+        when its last point differs from its start).  What draws nothing is dropped, as
+        a browser draws the path: zero-length segments; subpaths of one point (a moveto
+        followed by a moveto or the end, such as Inkscape's trailing ``z m 0 0``, or
+        ``m x y z``), counted in ``skipped``; closing lines shorter than ``1e-9`` times
+        the path's size (rounding left by summing relative coordinates), the contour
+        then ends exactly at its start.  A path that draws nothing has no contours.
 
     Raises
     ------
     ValueError
-        An unknown command letter or stray token, missing numbers, an arc flag other
-        than 0/1, a path not starting with a moveto, a subpath of one point (each naming
-        the token and its position), an arc when ``arcs="refuse"``.
+        Anything the SVG 1.1 path grammar forbids, naming the token and its position:
+        an unknown command letter or stray token, missing numbers, a misplaced comma
+        (``M,0``, ``0,,0``, a comma before a command or at the end), a non-ASCII digit,
+        an arc flag other than 0/1, a path not starting with a moveto; a number or a
+        point beyond the range of doubles (``1e999``), an arc that cannot be represented;
+        an arc when ``arcs="refuse"``; empty path data.
+    TypeError
+        ``d`` is not a str.
     """
     if arcs not in ("convert", "refuse"):
         raise ValueError(f"arcs must be 'convert' or 'refuse'; got {arcs!r}")
@@ -440,10 +453,11 @@ def svg_outline(
     if not 0 < tol < 0.1:
         raise ValueError(f"arc_tolerance must be in (0, 0.1); got {tol}")
     contours = []
-    for segs, closed, _pos in svg_subpaths(d, arcs, tol):
+    subpaths, skipped = svg_subpaths(d, arcs, tol)
+    for segs, closed, _pos in subpaths:
         curve = PiecewiseBezier._fast(segs)
         contours.append(Contour(curve, closed, np.zeros(len(segs) - 1 + closed, bool)))
-    return Outline(tuple(contours), name, "svg path data")
+    return Outline(tuple(contours), name, "svg path data", skipped=skipped)
 
 
 def svg_file_outlines(path: object, **kwargs) -> list[Outline]:
@@ -467,8 +481,8 @@ def svg_file_outlines(path: object, **kwargs) -> list[Outline]:
     out = []
     for k, el in enumerate(e for e in root.iter() if e.tag.rsplit("}", 1)[-1] == "path"):
         d = el.get("d")
-        if d is None:
-            continue
+        if d is None or not d.strip():
+            continue  # no path data: the element is not rendered (SVG 1.1 §8.3.1)
         ident = el.get("id") or f"path {k}"
         try:
             out.append(svg_outline(d, name=f"{p.name}: {ident}", **kwargs))

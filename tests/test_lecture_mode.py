@@ -26,7 +26,9 @@ ROOT = Path(__file__).resolve().parents[1]
 NOTEBOOK = ROOT / "tests" / "fixtures" / "lecture_demo.ipynb"
 VOILA = Path(sys.executable).with_name("voila")
 
-pytestmark = pytest.mark.timeout(60)
+# waits are generous (a loaded machine is slow, not wrong); the timeout only guards a hang
+WAIT_S = 300
+pytestmark = pytest.mark.timeout(900)
 
 
 def free_port() -> int:
@@ -92,7 +94,7 @@ def test_voila_serves_the_demo_with_its_widgets(tmp_path):
     descendants: set[int] = set()
     try:
         url = f"http://127.0.0.1:{port}/"
-        deadline = time.monotonic() + 30
+        deadline = time.monotonic() + WAIT_S
         page = None
         while time.monotonic() < deadline:
             assert proc.poll() is None, "voila exited early:\n" + log_text(log)
@@ -103,7 +105,7 @@ def test_voila_serves_the_demo_with_its_widgets(tmp_path):
                 break
             except (ConnectionError, urllib.error.URLError):
                 time.sleep(0.3)
-        assert page is not None, "voila did not answer within 30 s:\n" + log_text(log)
+        assert page is not None, f"voila did not answer within {WAIT_S} s:\n" + log_text(log)
         descendants = children(proc.pid)
         assert "application/vnd.jupyter.widget-view+json" in page, page[-2000:]
         assert "Joint 0 at" in page and "G2" in page  # the printed continuity report

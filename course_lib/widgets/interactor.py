@@ -97,10 +97,13 @@ class PointDragger:
         if self.active is None or event.button != 1:
             return
         k, self.active = self.active, None
+        newest = None
         if self.moves is not None:  # the release position supersedes any queued move
-            self.moves.pending = None
-            self.moves.flush()
+            newest, self.moves.pending = self.moves.pending, None
+            self.moves.flush()  # cancels the queued call: no stale move after the release
         xy = self._data_position(event)
+        if xy is None and newest is not None:  # a release without a position: the newest
+            xy = newest[1:]  # queued move is where the mouse was, never an older one
         if xy is not None:
             self.on_move(k, *xy)
         if self.on_release is not None:

@@ -17,7 +17,9 @@ After each interaction it waits until the demo is quiet, so every sample is one 
 idle demo.  The medians go to ``test-artifacts/demo-latency.json`` and ``.md``.
 
 It is a benchmark, not a timed assertion: the only assertions are that every input produced a
-new picture and that a released point lands under the mouse (within 1.5 px).
+new picture (waits are generous: how soon is measured, never asserted) and that a released point
+lands under the mouse (within 1.5 px of where the mouseup happened on the canvas, whatever the
+load; how far the canvas moved in the page during the drag is reported).
 """
 
 from __future__ import annotations
@@ -29,7 +31,7 @@ import time
 from pathlib import Path
 
 import pytest
-from browser_harness import RUN_STATE_JS, kernel, make_server, new_page
+from browser_harness import RUN_STATE_JS, WAIT_MS, WAIT_S, kernel, make_server, new_page
 
 HERE = Path(__file__).resolve().parent
 NOTEBOOK = HERE / "fixtures" / "all_demos.ipynb"
@@ -54,6 +56,14 @@ INIT_JS = """(() => {
   window.__clInput = 0;
   for (const type of ['keydown', 'mousemove', 'mousedown', 'mouseup'])
     window.addEventListener(type, () => { window.__clInput = performance.now(); }, true);
+  // where the mouse was released, relative to the canvas it was released on (CSS px), taken
+  // at the event: what the demo must put the point under, even if the page moved meanwhile
+  window.__clUp = null;
+  window.addEventListener('mouseup', (e) => {
+    const r = e.target.getBoundingClientRect();
+    window.__clUp = {x: e.clientX - r.left, y: e.clientY - r.top, canvas: e.target.tagName,
+                     t: performance.now()};
+  }, true);
 })();"""
 
 # ms from input time t0 to the first frame painted inside `sel` after it (null: none yet)
@@ -108,24 +118,46 @@ def quiet(page, sel: str, timeout: float = 10.0) -> None:
 def latency(page, sel: str) -> float:
     """ms from the last input event to the first new frame on ``sel``'s canvas."""
     t0 = page.evaluate("() => window.__clInput")
-    ms = page.wait_for_function(FIRST_DRAW_JS, arg=[sel, t0], polling=10, timeout=20_000)
+    # generous: a frame must come (that is asserted), how soon is measured, not asserted
+    ms = page.wait_for_function(FIRST_DRAW_JS, arg=[sel, t0], polling=10, timeout=WAIT_MS)
     return float(ms.json_value())
 
 
 def fast_drag_and_release(page, sel: str, x: float, y: float, dx: float,
-                          moves: int = 15) -> float:
+                          moves: int = 15, name: str | None = None) -> float:
     """Move the (held) mouse ``moves`` times, one move every 33 ms as a hand does, release at
     once, without waiting for pictures; return the ms from the release to the last new frame
-    (what queued up in the kernel, and the final frame; negative: no frame after release)."""
+    (what queued up in the kernel, and the final frame)."""
     for i in range(moves):
         page.mouse.move(x + dx * (i + 1), y)
         if i < moves - 1:  # the hand lets go right after its last move
             page.wait_for_timeout(33)
+    page.evaluate("() => { window.__clUp = null; }")
     page.mouse.up()
-    t_up = page.evaluate("() => window.__clInput")
+    # On a busy machine the page may still be dispatching queued moves when mouse.up()
+    # returns: wait for the mouseup itself, then (a demo) for the kernel to have handled it
+    # (the kernel reads comm messages and our requests in no guaranteed order: a state read
+    # too early sees a point the release has not reached yet).
+    t_up = page.wait_for_function("() => window.__clUp && window.__clUp.t",
+                                  timeout=WAIT_MS).json_value()
+    if name is not None:
+        released(page, name)
+    # the release sends a complete picture: wait for it (behaviour), then for the quiet
+    page.wait_for_function(FIRST_DRAW_JS, arg=[sel, t_up], polling=10, timeout=WAIT_MS)
     page.wait_for_timeout(QUIET_MS)
     quiet(page, sel, timeout=30)
     return round(page.evaluate(LAST_DRAW_JS, sel) - t_up, 1)
+
+
+def released(page, name: str) -> None:
+    """Wait until the kernel has handled the mouse release of demo ``name`` (its dragger
+    holds no point).  A hang guard only (WAIT_S): how long it takes is not asserted."""
+    deadline = time.monotonic() + WAIT_S
+    while kernel(page, f"print(BENCH[{name!r}].dragger.active is None)").strip() != "True":
+        if time.monotonic() > deadline:
+            raise AssertionError(f"{name}: the kernel did not handle the mouse release "
+                                 f"within {WAIT_S:.0f} s")
+        page.wait_for_timeout(100)
 
 
 def median(xs):
@@ -146,10 +178,10 @@ def bench_page(chromium_path, tmp_path_factory, request):
         context, page, _log = new_page(browser, width=1400, height=1000)
         page.add_init_script(INIT_JS)
         page.goto(f"{server.url}/lab/tree/{NOTEBOOK.name}?reset&token={server.token}")
-        expect(page.locator("#jp-main-statusbar")).to_contain_text("| Idle", timeout=90_000)
+        expect(page.locator("#jp-main-statusbar")).to_contain_text("| Idle", timeout=WAIT_MS)
         page.locator(".lm-MenuBar-item", has_text="Run").click()
         page.locator('.lm-Menu-item[data-command="runmenu:run-all"]').click()
-        state = page.wait_for_function(RUN_STATE_JS, polling=250, timeout=120_000).json_value()
+        state = page.wait_for_function(RUN_STATE_JS, polling=250, timeout=WAIT_MS).json_value()
         assert state is True, state
         kernel(page, GEO)
         yield page
@@ -168,7 +200,7 @@ def _slider(demo):
     raise AssertionError("no slider in the demo")
 
 
-@pytest.mark.timeout(300)
+@pytest.mark.timeout(1800)  # a hang guard only: on a loaded machine this test is slow, not wrong
 def test_input_to_canvas_latency(bench_page, artifacts):
     page = bench_page
     load0 = os.getloadavg()
@@ -178,7 +210,7 @@ def test_input_to_canvas_latency(bench_page, artifacts):
         demo = page.locator(sel)
         demo.scroll_into_view_if_needed()
         canvas = demo.locator(".jupyter-matplotlib-canvas-div canvas").first
-        canvas.wait_for(state="visible", timeout=30_000)
+        canvas.wait_for(state="visible", timeout=WAIT_MS)
         quiet(page, sel)
         # -- slider: arrow keys, alternating so the value stays in range
         ssel, handle = _slider(demo)
@@ -207,18 +239,27 @@ def test_input_to_canvas_latency(bench_page, artifacts):
             page.mouse.move(box["x"] + px, box["y"] + py)
             drag.append(latency(page, sel))
             quiet(page, sel)
-        settle = fast_drag_and_release(page, sel, box["x"] + px, box["y"] + py, -2.0)
+        settle = fast_drag_and_release(page, sel, box["x"] + px, box["y"] + py, -2.0,
+                                       name=name)
         px -= 30
+        up = page.evaluate("() => window.__clUp")
         moves = kernel(page, f"m = BENCH[{name!r}].dragger.moves; print(m.calls, m.dropped)")
         calls, dropped = (int(v) for v in moves.split())
         page.wait_for_timeout(200)
         nx, ny = json.loads(kernel(page, f"print(_cl_geo({name!r}))"))["points"][k]
-        err = round(max(abs(nx - px), abs(ny - py)), 1)
+        # Behaviour, not timing: the point is under the mouse where it was released *on the
+        # canvas* (the page may scroll or reflow during a drag on a busy machine: the box
+        # measured before the drag would then be stale; its drift is reported, not asserted).
+        assert up is not None and up["canvas"] == "CANVAS", up
+        err = round(max(abs(nx - up["x"]), abs(ny - up["y"])), 1)
         assert err <= 1.5, (
-            f"{name}: released at ({px:.1f}, {py:.1f}) px, the point is at ({nx:.1f}, {ny:.1f})")
+            f"{name}: released at ({up['x']:.1f}, {up['y']:.1f}) px on the canvas, "
+            f"the point is at ({nx:.1f}, {ny:.1f})")
+        drift = round(max(abs(up["x"] - px), abs(up["y"] - py)), 1)
         rows[name] = {"slider": median(slider), "slider control": ssel, "drag": median(drag),
                       "fast drag: release to final frame": settle,
-                      "released point: px from the mouse": err, "n": N,
+                      "released point: px from the mouse": err,
+                      "canvas moved during the drag (px)": drift, "n": N,
                       "moves handled / dropped as stale (whole test)": [calls, dropped],
                       "slider samples": [round(x, 1) for x in slider],
                       "drag samples": [round(x, 1) for x in drag]}
@@ -227,7 +268,7 @@ def test_input_to_canvas_latency(bench_page, artifacts):
     sel = ".cl-bench-patches"
     fig = page.locator(sel).first
     fig.scroll_into_view_if_needed()
-    fig.locator("canvas").first.wait_for(state="visible", timeout=30_000)
+    fig.locator("canvas").first.wait_for(state="visible", timeout=WAIT_MS)
     quiet(page, sel)
     box = fig.locator(".jupyter-matplotlib-canvas-div").first.bounding_box()
     x, y = box["x"] + box["width"] * 0.25, box["y"] + box["height"] * 0.5

@@ -30,7 +30,15 @@ import time
 from pathlib import Path
 
 import pytest
-from browser_harness import ARTIFACTS, RUN_STATE_JS, kernel, make_server, new_page
+from browser_harness import (
+    ARTIFACTS,
+    RUN_STATE_JS,
+    WAIT_MS,
+    WAIT_S,
+    kernel,
+    make_server,
+    new_page,
+)
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -50,8 +58,8 @@ CANVAS = ".cl-canvas .jupyter-matplotlib-canvas-div"
 TARGET = ".cl-test-target"
 # console messages that are not the notebook's fault: requests we aborted on purpose
 IGNORED_CONSOLE = ("net::ERR_FAILED",)
-KERNEL_TIMEOUT_MS = 90_000
-RUN_ALL_TIMEOUT_MS = 120_000
+KERNEL_TIMEOUT_MS = WAIT_MS
+RUN_ALL_TIMEOUT_MS = WAIT_MS
 
 
 # ----------------------------------------------------------------------------- helpers
@@ -72,7 +80,7 @@ def changed_pixels(a: bytes, b: bytes) -> int:
     return int(np.count_nonzero(np.any(pa != pb, axis=-1)))
 
 
-def wait_for_new_picture(locator, before: bytes, *, timeout: float = 10.0,
+def wait_for_new_picture(locator, before: bytes, *, timeout: float = WAIT_S,
                          min_pixels: int = 30) -> int:
     """Screenshot ``locator`` until it differs from ``before`` in >= ``min_pixels`` pixels."""
     deadline = time.monotonic() + timeout
@@ -86,7 +94,7 @@ def wait_for_new_picture(locator, before: bytes, *, timeout: float = 10.0,
     raise AssertionError(f"the canvas did not change ({n} pixels differ after {timeout} s)")
 
 
-def settle(canvas, report, *, quiet_ms: int = 500, timeout: float = 15.0) -> bytes:
+def settle(canvas, report, *, quiet_ms: int = 500, timeout: float = WAIT_S) -> bytes:
     """Wait until the picture and the report stop changing (the kernel may still be working
     through queued events); return the final screenshot."""
     png, text = canvas.screenshot(), report.inner_text()
@@ -126,8 +134,8 @@ def move_slider(page, demo, steps: int = 3) -> tuple[str, str, int]:
         page.keyboard.press("ArrowRight")
         page.wait_for_timeout(60)
     if before_value is not None:
-        expect(readout).not_to_have_text(before_value, timeout=10_000)
-    expect(report).not_to_have_text(before_text, timeout=10_000)
+        expect(readout).not_to_have_text(before_value, timeout=WAIT_MS)
+    expect(report).not_to_have_text(before_text, timeout=WAIT_MS)
     n = wait_for_new_picture(canvas, before_png)
     settle(canvas, report)
     return sel, before_text, n
@@ -280,7 +288,7 @@ def lab(request, chromium_path, voila_server, tmp_path_factory):
         pytest.fail(f"processes left by the JupyterLab test: {server.leftovers}")
 
 
-@pytest.mark.timeout(240)
+@pytest.mark.timeout(1800)
 class TestJupyterLab:
     def test_all_cells_run_without_errors(self, lab):
         from playwright.sync_api import expect
@@ -295,9 +303,9 @@ class TestJupyterLab:
         )
         assert tracebacks.count() == 0, tracebacks.first.inner_text()
         demo = page.locator(".cl-demo").first
-        expect(demo).to_be_attached(timeout=30_000)
+        expect(demo).to_be_attached(timeout=WAIT_MS)
         demo.scroll_into_view_if_needed()
-        expect(demo.locator(CANVAS).first).to_be_visible(timeout=30_000)
+        expect(demo.locator(CANVAS).first).to_be_visible(timeout=WAIT_MS)
         expect(page.locator(".jupyter-widgets-error-widget")).to_have_count(0)
         problems = lab.log.problems(IGNORED_CONSOLE)
         assert not problems, "\n".join(problems)
@@ -358,7 +366,7 @@ class TestJupyterLab:
         )
         n = wait_for_new_picture(canvas, before_png)
         assert n >= 30
-        expect(report).not_to_have_text(before_text, timeout=10_000)
+        expect(report).not_to_have_text(before_text, timeout=WAIT_MS)
         settle(canvas, report)
         # no callback failed during the interaction
         errors = demo.locator(".cl-output").all_inner_texts()
@@ -438,13 +446,13 @@ def voila_page(request, voila_server):
         page.goto(f"{voila_server.url}/?token={voila_server.token}")
         demo = page.locator(".cl-demo").first
         expect(demo.locator(".cl-report")).not_to_be_empty(timeout=KERNEL_TIMEOUT_MS)
-        expect(demo.locator(CANVAS).first).to_be_visible(timeout=30_000)
+        expect(demo.locator(CANVAS).first).to_be_visible(timeout=WAIT_MS)
         yield Session(voila_server, page, log, {})
     finally:
         context.close()
 
 
-@pytest.mark.timeout(180)
+@pytest.mark.timeout(1800)
 class TestVoila:
     def test_slider_changes_report_and_curve(self, voila_page, artifacts):
         from playwright.sync_api import expect

@@ -24,7 +24,7 @@ import time
 from pathlib import Path
 
 import pytest
-from browser_harness import make_server, new_page
+from browser_harness import WAIT_MS, WAIT_S, make_server, new_page
 
 ROOT = Path(__file__).resolve().parents[2]
 LECTURE = "04"
@@ -78,7 +78,7 @@ def deck_server(chromium_path, tmp_path_factory):
                                    stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
                                    start_new_session=True)
     try:
-        ok = present.wait_preheated(server.root / present.READY, server.proc, timeout=240)
+        ok = present.wait_preheated(server.root / present.READY, server.proc, timeout=WAIT_S)
         assert ok, f"the pre-heated kernel did not execute the deck:\n{server.log_tail()}"
         server.preheat_s = time.monotonic() - t0
         yield server
@@ -89,7 +89,7 @@ def deck_server(chromium_path, tmp_path_factory):
         pytest.fail(f"processes left by the lecture-mode test: {server.leftovers}")
 
 
-@pytest.mark.timeout(300)
+@pytest.mark.timeout(1800)  # a hang guard: waits are WAIT_S each
 def test_lecture_deck_on_a_projector(deck_server, chromium_browser, artifacts):
     from playwright.sync_api import expect
 
@@ -106,14 +106,14 @@ def test_lecture_deck_on_a_projector(deck_server, chromium_browser, artifacts):
         })();""")
         t0 = time.monotonic()
         page.goto(f"{deck_server.url}/")
-        expect(page.locator("section.deck-slide").first).to_be_visible(timeout=60_000)
+        expect(page.locator("section.deck-slide").first).to_be_visible(timeout=WAIT_MS)
         result["first slide visible (s)"] = round(time.monotonic() - t0, 2)
-        expect(page.locator(".cl-demo").first).to_be_attached(timeout=60_000)
+        expect(page.locator(".cl-demo").first).to_be_attached(timeout=WAIT_MS)
         n_demos = page.locator(".cl-demo").count()
         assert n_demos >= 1, "the deck shows no demo"
         expect(page.locator(".cl-demo .jupyter-matplotlib-canvas-div")).to_have_count(
-            n_demos, timeout=60_000)
-        page.wait_for_function("() => window.__clDraws > 0", timeout=60_000)
+            n_demos, timeout=WAIT_MS)
+        page.wait_for_function("() => window.__clDraws > 0", timeout=WAIT_MS)
         result["every demo live (s)"] = round(time.monotonic() - t0, 2)
         page.screenshot(path=str(artifacts / "lecture-deck-1920-first-slide.png"))
         assert result["every demo live (s)"] <= 30, result
@@ -145,8 +145,8 @@ def test_lecture_deck_on_a_projector(deck_server, chromium_browser, artifacts):
         for _ in range(3):
             page.keyboard.press("ArrowRight")
             page.wait_for_timeout(80)
-        page.wait_for_function(f"() => window.__clDraws > {draws}", timeout=20_000)
-        expect(report).not_to_have_text(before, timeout=20_000)
+        page.wait_for_function(f"() => window.__clDraws > {draws}", timeout=WAIT_MS)
+        expect(report).not_to_have_text(before, timeout=WAIT_MS)
         page.wait_for_timeout(400)
         page.screenshot(path=str(artifacts / "lecture-deck-1920-demo.png"))
         assert not log.blocked, f"requests to other hosts: {log.blocked}"
