@@ -61,10 +61,8 @@ for the grader's own failures (bad arguments, a broken hidden-test file, no subm
 from __future__ import annotations
 
 import argparse
-import hashlib
 import json
 import os
-import re
 import sys
 import threading
 from concurrent.futures import ThreadPoolExecutor, as_completed
@@ -74,7 +72,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from grading import reports, sandbox
+from grading import intake, reports, safe_names, sandbox
 from grading.runner import (
     DEFAULT_CELL_TIMEOUT,
     DEFAULT_QUESTION_TIMEOUT,
@@ -104,41 +102,15 @@ __all__ = [
 
 
 def discover(folder: Path) -> list[tuple[str, Path, list[Path]]]:
-    """``(student, notebook to grade, other notebooks of that student)``, sorted by student."""
-    by_student: dict[str, list[Path]] = {}
-    for f in sorted(folder.rglob("*.ipynb")):
-        rel = f.relative_to(folder)
-        if ".ipynb_checkpoints" in rel.parts or any(p.startswith(".") for p in rel.parts):
-            continue
-        if not f.is_file():
-            continue
-        student = rel.stem if len(rel.parts) == 1 else rel.parts[0]
-        by_student.setdefault(student, []).append(f)
-    out = []
-    for student in sorted(by_student):
-        files = sorted(by_student[student], key=lambda p: (-p.stat().st_mtime, str(p)))
-        out.append((student, files[0], files[1:]))
-    return out
+    """``(student, notebook to grade, other notebooks of that student)``, sorted by student.
 
-
-_SAFE = re.compile(r"[A-Za-z0-9._-]")
+    Links and files that are not regular are left out (``intake.scan`` reports them)."""
+    return intake.scan(folder).found
 
 
 def feedback_names(students: list[str]) -> dict[str, str]:
     """A distinct, filesystem-safe file stem per student (distinct even case-insensitively)."""
-
-    def slug(s: str) -> str:
-        text = "".join(ch if _SAFE.fullmatch(ch) else f"%{ord(ch):02X}" for ch in s)
-        return text.lstrip(".") or "_"
-
-    names = {s: slug(s) for s in students}
-    counts: dict[str, int] = {}
-    for n in names.values():
-        counts[n.lower()] = counts.get(n.lower(), 0) + 1
-    for s, n in names.items():
-        if counts[n.lower()] > 1 or len(n) > 120:
-            names[s] = f"{n[:100]}-{hashlib.sha256(s.encode()).hexdigest()[:10]}"
-    return names
+    return safe_names.file_stems(students)
 
 
 def feedback_markdown(r: Result, tests: HiddenTests, late=None) -> str:
@@ -161,6 +133,7 @@ class Reports:
         self.tests, self.out, self.fmt, self.roster, self.late = tests, out, fmt, roster, late
         self.results: dict[str, Result] = {r.student: r for r in keep or []}
         self.labels: dict[str, dict[str, str]] = {}
+        self.stems: dict[str, str] = safe_names.file_stems(self.results)
         self.lock = threading.Lock()
         (out / "feedback").mkdir(parents=True, exist_ok=True)
 
@@ -174,17 +147,23 @@ class Reports:
         if entry is None:
             r.run_notes.append("not in the roster: map this submission to a student by hand")
 
+    def reserve(self, students) -> None:
+        """Give every student of the batch a feedback file name now (stable whatever order)."""
+        with self.lock:
+            self.stems = safe_names.file_stems(students, self.stems)
+
     def add(self, r: Result) -> None:
+        safe_names.scrub(r)  # text from the submission that UTF-8 cannot encode is escaped
         with self.lock:
             self.results[r.student] = r
             self.write(only=r)
 
     def write(self, only: Result | None = None) -> None:
         results = list(self.results.values())
-        names = feedback_names(sorted(self.results))
+        self.stems = safe_names.file_stems(self.results, self.stems)
         for r in [only] if only is not None else results:
             reports.atomic_write(
-                self.out / "feedback" / f"{names[r.student]}.md",
+                self.out / "feedback" / f"{self.stems[r.student]}.md",
                 reports.feedback_markdown(r, self.tests, self.late),
             )
         table = reports.scores_table(
@@ -248,19 +227,35 @@ def resolve_sandbox(choice: str) -> tuple[str, str]:
     return "none", f"WARNING: {why}; " + UNSANDBOXED_NOTE
 
 
+def _refused_result(student: str, entries, tests: HiddenTests, mode: str) -> Result:
+    """The row of a student none of whose files was opened (links, FIFOs, ...): 0, and why."""
+    reason = entries[0][1]
+    r = Result(
+        student,
+        dict.fromkeys(tests.points, 0.0),
+        dict.fromkeys(tests.points, f"not graded: the submission is {reason.split(',')[0]}"),
+        status=reason,
+        sandbox=mode,
+    )
+    r.file = entries[0][0]
+    r.run_notes += intake.refusal_note(entries)
+    r.run_notes.append("the grader opens only regular files inside the submissions folder")
+    return r
+
+
 def _finish_result(r: Result, item, folder: Path, args, late) -> Result:
     student, path, others = item
-    r.file = path.relative_to(folder).as_posix()
+    r.file = intake.shown_path(path, folder)
     if others:
         r.status = f"{r.status}; several notebooks"
         r.run_notes.append(
             f"several notebooks were submitted; graded {r.file} (the newest), ignored "
-            + ", ".join(o.relative_to(folder).as_posix() for o in others)
+            + ", ".join(intake.shown_path(o, folder) for o in others)
         )
     if r.manifest_student and r.manifest_student != student:
         r.run_notes.append(f"the submission's manifest names student {r.manifest_student!r}")
     if args.time_source == "file" or r.submitted is None:
-        mtime = datetime.fromtimestamp(path.stat().st_mtime, tz=timezone.utc)
+        mtime = datetime.fromtimestamp(path.lstat().st_mtime, tz=timezone.utc)
         r.submitted, r.time_source = mtime.isoformat(timespec="seconds"), "file time"
     if late is not None:
         r.days_late, r.penalty = late.apply(datetime.fromisoformat(r.submitted))
@@ -318,15 +313,18 @@ def main(argv: list[str] | None = None) -> int:
     if not args.submissions.is_dir():
         print(f"--submissions {args.submissions} is not a folder", file=sys.stderr)
         return 2
-    found = discover(args.submissions)
+    scanned = intake.scan(args.submissions)
     if args.only is not None:
-        found = [f for f in found if f[0] == args.only]
-        if not found:
+        scanned.found = [f for f in scanned.found if f[0] == args.only]
+        scanned.refused = {k: v for k, v in scanned.refused.items() if k == args.only}
+        if not scanned.found and not scanned.refused:
             print(f"--only {args.only}: no submission of that student", file=sys.stderr)
             return 2
-    if not found:
+    if not scanned.found and not scanned.refused:
         print(f"no .ipynb files under {args.submissions}", file=sys.stderr)
         return 1
+    contents = intake.load(args.submissions, scanned)  # links and non-regular files refused
+    found = scanned.found
     roster = reports.read_roster(args.roster) if args.roster else None
     late = (reports.LatePolicy(reports.parse_deadline(args.deadline),
                                reports.parse_penalty(args.late_penalty))
@@ -349,6 +347,13 @@ def main(argv: list[str] | None = None) -> int:
     args.out.mkdir(parents=True, exist_ok=True)
     keep = load_previous(args.out, tests) if args.only is not None else None
     out = Reports(tests, args.out, fmt=args.format, roster=roster, late=late, keep=keep)
+    out.reserve([f[0] for f in found] + list(scanned.refused))
+    for student, entries in scanned.refused.items():
+        if not any(f[0] == student for f in found):  # nothing of theirs was opened
+            r = _refused_result(student, entries, tests, mode)
+            out.lookup(r)
+            out.add(r)
+            print(f"{r.student}: not graded ({r.status})", flush=True)
 
     secret = read_secret(args.secret_file) if args.secret_file else None
     if tests.variants and secret is None:
@@ -371,12 +376,13 @@ def main(argv: list[str] | None = None) -> int:
             "tests_source": tests.source,
             "tests_name": str(args.tests),
             "student": student,
-            "notebook": path.read_bytes(),
+            "notebook": contents[path],
             "options": opts,
         }
 
     def done(item, data: dict) -> None:
         r = _finish_result(Result(**data), item, args.submissions, args, late)
+        r.run_notes += intake.refusal_note(scanned.refused.get(r.student, []))
         out.lookup(r)
         out.add(r)
         print(

@@ -31,6 +31,8 @@ from dataclasses import dataclass
 from datetime import datetime, timezone
 from pathlib import Path
 
+from .safe_names import safe_csv_writer
+
 FORMATS = ("plain", "canvas", "moodle")
 
 
@@ -129,7 +131,7 @@ def scores_table(
 ) -> str:
     questions = list(tests.points)
     buf = io.StringIO()
-    w = csv.writer(buf, lineterminator="\n")
+    w = safe_csv_writer(buf, lineterminator="\n")  # no cell is ever a formula
     rows = sorted(results, key=lambda r: r.student)
     if fmt == "canvas":
         w.writerow(["Student", "ID", "SIS User ID", "SIS Login ID", "Section", assignment])

@@ -455,10 +455,18 @@ def _read_notebook(path: Path) -> tuple[nbformat.NotebookNode | None, str]:
     except OSError as exc:
         return None, f"the file could not be read ({type(exc).__name__})"
     try:
+        data = json.loads(text)
+    except json.JSONDecodeError as exc:  # where, never what: the bytes may be anyone's secret
+        where = f"line {exc.lineno}, column {exc.colno}"
+        return None, f"the file is not a valid notebook (not JSON: {where})"
+    except RecursionError:
+        return None, "the file is not a valid notebook (nested too deeply)"
+    if not isinstance(data, dict) or not isinstance(data.get("cells"), list):
+        return None, "the file is not a valid notebook (no cells)"
+    try:
         nb = nbformat.reads(text, as_version=4)
-    except Exception as exc:  # malformed JSON or not a notebook at all
-        first = str(exc).strip().splitlines()[0] if str(exc).strip() else type(exc).__name__
-        return None, f"the file is not a valid notebook ({first[:200]})"
+    except Exception as exc:  # not a notebook: the type of error only, no text from the file
+        return None, f"the file is not a valid notebook ({type(exc).__name__})"
     if not isinstance(nb.get("cells"), list):
         return None, "the file is not a valid notebook (no cells)"
     return nb, ""
