@@ -151,7 +151,7 @@ HOSTILE = {
     b"caf\xe9": "bad UTF-8 file name",
     b"Bob": "case 1",
     b"bob": "case 2",
-    b"=HYPERLINK(\"evil.example\",\"x\")": "formula",
+    b'=HYPERLINK("evil.example","x")': "formula",
     b"@cmd": "formula",
     b"-2+3": "formula",
     b"new\nline": "control character",

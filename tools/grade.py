@@ -72,7 +72,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from grading import intake, reports, safe_names, sandbox
+from grading import intake, jobroot, reports, safe_names, sandbox
 from grading.runner import (
     DEFAULT_CELL_TIMEOUT,
     DEFAULT_QUESTION_TIMEOUT,
@@ -279,6 +279,18 @@ def main(argv: list[str] | None = None) -> int:
     )
     p.add_argument("--memory", type=float, default=4.0, help="address-space limit, GiB")
     p.add_argument("--output-limit", type=int, default=1 << 20, help="bytes of output per cell")
+    p.add_argument(
+        "--disk", type=float, default=512, help="MB a submission may write in its job folder"
+    )
+    p.add_argument(
+        "--tmp-size", type=float, default=64, help="MB of the sandbox's /tmp and of its /dev/shm"
+    )
+    p.add_argument(
+        "--job-root",
+        type=Path,
+        help="folder for job folders (created 0700, or must be yours and 0700; "
+        "default: a fresh private temp folder)",
+    )
     p.add_argument("--roster", type=Path, help="CSV: id[, submission, name, email]")
     p.add_argument(
         "--format",
@@ -336,13 +348,21 @@ def main(argv: list[str] | None = None) -> int:
         memory_bytes=int(args.memory * sandbox.GIB),
         cpu_seconds=int(args.time_limit) + 30,
         output_bytes=args.output_limit,
+        disk_bytes=int(args.disk * (1 << 20)),
+        tmp_bytes=int(args.tmp_size * (1 << 20)),
     )
+    if args.job_root is not None:
+        try:
+            jobroot.check_root(args.job_root)
+        except (ValueError, OSError) as exc:
+            raise SystemExit(f"--job-root: {exc}") from None
     options = {
         "cell_timeout": args.cell_timeout,
         "time_limit": args.time_limit,
         "question_timeout": args.question_timeout,
         "mode": mode,
         "limits": limits,
+        "job_root": str(args.job_root) if args.job_root is not None else None,
     }
     args.out.mkdir(parents=True, exist_ok=True)
     keep = load_previous(args.out, tests) if args.only is not None else None

@@ -13,7 +13,6 @@ import functools
 import json
 import os
 import secrets
-import shutil
 import signal
 import stat
 import subprocess
@@ -29,7 +28,7 @@ import nbformat
 
 from course_lib.submit import manifest_of
 
-from . import protocol, sandbox
+from . import jobroot, protocol, sandbox
 
 DEFAULT_CELL_TIMEOUT = 60.0
 DEFAULT_TIME_LIMIT = 300.0
@@ -134,6 +133,7 @@ class Options:
     question_timeout: float = DEFAULT_QUESTION_TIMEOUT
     mode: str = "bwrap"  # "bwrap" or "none" (resolved from --sandbox auto by main)
     limits: sandbox.Limits = field(default_factory=sandbox.Limits)
+    job_root: str | None = None  # None: a fresh private folder (grading.jobroot)
 
 
 # ------------------------------------------------------------------------------ kernels
@@ -479,10 +479,21 @@ def _error_text(outputs) -> str | None:
     return None
 
 
-def _jobs_base() -> Path:
-    base = Path(tempfile.gettempdir()) / "course-grader"
-    base.mkdir(mode=0o700, exist_ok=True)
-    return base
+def _note_disk(job: Path, mounted: bool, limit: int, result: Result) -> None:
+    """Say so when the submission filled its job folder (its own writes failed, nobody else's)."""
+    try:
+        if mounted:
+            sv = os.statvfs(job)
+            full = sv.f_bavail * sv.f_frsize < (1 << 20)
+        else:
+            full = jobroot.used_bytes(job, stop_at=limit) > limit
+    except OSError:
+        return
+    if full:
+        result.run_notes.append(
+            f"the job folder reached the disk limit of {limit >> 20} MB "
+            "(writes past it failed with 'No space left on device')"
+        )
 
 
 def _note_variant_mismatch(session, timeout: float, variant: str, result: Result) -> None:
@@ -512,9 +523,12 @@ def grade_notebook(
     mode: str = "bwrap",
     limits: sandbox.Limits | None = None,
     variant: str = "",
+    job_root: str | None = None,
 ) -> Result:
     """Run one submission in a sandbox and grade it here; never raises for a bad submission."""
-    opts = Options(cell_timeout, time_limit, question_timeout, mode, limits or sandbox.Limits())
+    opts = Options(
+        cell_timeout, time_limit, question_timeout, mode, limits or sandbox.Limits(), job_root
+    )
     start = time.monotonic()
     questions = list(tests.points)
     result = Result(
@@ -548,7 +562,7 @@ def grade_notebook(
         result.variant = variant
         if variant:
             result.run_notes.append(f"graded on the student's own data (variant {variant})")
-    job = Path(tempfile.mkdtemp(prefix="job-", dir=_jobs_base()))
+    job, mounted = jobroot.job_folder(jobroot.job_root(job_root), opts.limits.disk_bytes)
     session = _Session(job, cells, opts, start + time_limit, result)
     try:
         (job / "submission.ipynb").write_bytes(path.read_bytes())  # the kernel's working copy
@@ -572,7 +586,8 @@ def grade_notebook(
                 result.run_notes.append(f"code cell {k + 1} raised {session.errors[k]}")
     finally:
         session.close()
-        shutil.rmtree(job, ignore_errors=True)
+        _note_disk(job, mounted, opts.limits.disk_bytes, result)
+        jobroot.remove_job_folder(job, mounted)
     for q in questions:
         if result.fractions.get(q, 0.0) < 1.0 and not result.notes[q]:
             result.notes[q] = "wrong answer"
@@ -590,7 +605,8 @@ def grade_payload(payload: dict) -> dict:
     """
 
     tests = HiddenTests.from_source(payload["tests_source"], Path(payload["tests_name"]))
-    with tempfile.TemporaryDirectory(prefix="submission-") as tmp:
+    root = jobroot.job_root(payload["options"].get("job_root"))
+    with tempfile.TemporaryDirectory(prefix="submission-", dir=root) as tmp:
         path = Path(tmp) / "submission.ipynb"
         path.write_bytes(payload["notebook"])
         try:

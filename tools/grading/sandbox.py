@@ -44,6 +44,8 @@ class Limits:
     file_bytes: int = 64 << 20
     processes: int = 64
     output_bytes: int = 1 << 20  # per cell, enforced by the grader (kernel killed past it)
+    disk_bytes: int = 512 << 20  # the job folder (a size-limited tmpfs when the grader is root)
+    tmp_bytes: int = 64 << 20  # the sandbox's /tmp, and its /dev/shm (RAM: tmpfs)
 
 
 def bwrap_path() -> str | None:
