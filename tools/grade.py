@@ -79,7 +79,9 @@ from grading.runner import (
     DEFAULT_TIME_LIMIT,
     UNSANDBOXED_NOTE,
     HiddenTests,
+    Options,
     Result,
+    check_sandbox,
     grade_notebook,
     grade_payload,
 )
@@ -364,6 +366,16 @@ def main(argv: list[str] | None = None) -> int:
         "limits": limits,
         "job_root": str(args.job_root) if args.job_root is not None else None,
     }
+    if mode == "bwrap":  # prove it once, before anyone is graded
+        problem = check_sandbox(Options(**options))
+        if problem:
+            print(
+                f"the sandbox cannot run the course's kernels: {problem}. Nothing was graded "
+                "(a link to the environment is followed for you; bind or copy what is missing, "
+                "or use --sandbox none for trusted submissions only).",
+                file=sys.stderr,
+            )
+            return 2
     args.out.mkdir(parents=True, exist_ok=True)
     keep = load_previous(args.out, tests) if args.only is not None else None
     out = Reports(tests, args.out, fmt=args.format, roster=roster, late=late, keep=keep)

@@ -27,7 +27,14 @@ import tempfile
 import threading
 from pathlib import Path
 
-__all__ = ["check_root", "job_folder", "job_root", "remove_job_folder"]
+__all__ = [
+    "check_root",
+    "job_folder",
+    "job_root",
+    "remove_job_folder",
+    "response_folder",
+    "used_bytes",
+]
 
 _LOCK = threading.Lock()
 _DEFAULT: dict[int, Path] = {}  # pid -> this process's private root
@@ -85,25 +92,40 @@ def _can_mount() -> bool:
     return os.geteuid() == 0 and shutil.which("mount") is not None and os.name == "posix"
 
 
+def _mount_tmpfs(path: Path, size: int) -> bool:
+    options = f"size={int(size)},mode=0700,nosuid,nodev"
+    proc = subprocess.run(
+        ["mount", "-t", "tmpfs", "-o", options, "course-grader-job", str(path)],
+        capture_output=True,
+        timeout=20,
+    )
+    return proc.returncode == 0
+
+
 def job_folder(root: Path, disk_bytes: int | None) -> tuple[Path, bool]:
     """A new private job folder in ``root``: ``(path, on a size-limited tmpfs?)``."""
     job = Path(tempfile.mkdtemp(prefix="job-", dir=root))
-    if disk_bytes and _can_mount():
-        options = f"size={int(disk_bytes)},mode=0700,nosuid,nodev"
-        proc = subprocess.run(
-            ["mount", "-t", "tmpfs", "-o", options, "course-grader-job", str(job)],
-            capture_output=True,
-            timeout=20,
-        )
-        if proc.returncode == 0:
-            return job, True
+    if disk_bytes and _can_mount() and _mount_tmpfs(job, disk_bytes):
+        return job, True
     return job, False
+
+
+def response_folder(job: Path, size: int, mounted: bool) -> Path:
+    """``job/.grader``, where the probe writes its answers: its own small tmpfs when ``job``
+    is one, so a submission that fills its job folder still has its answers read."""
+    folder = job / ".grader"
+    folder.mkdir(mode=0o700)
+    if mounted:
+        _mount_tmpfs(folder, size)
+    return folder
 
 
 def remove_job_folder(job: Path, mounted: bool) -> None:
     """Remove a job folder made by :func:`job_folder` (unmounting its tmpfs first)."""
-    if mounted:
-        subprocess.run(["umount", "--lazy", str(job)], capture_output=True, timeout=20)
+    if mounted:  # the job folder and the response folder inside it
+        subprocess.run(
+            ["umount", "--lazy", "--recursive", str(job)], capture_output=True, timeout=20
+        )
     shutil.rmtree(job, ignore_errors=True)
     if job.exists():  # a folder the student made unwritable: open it up, try once more
         for dirpath, dirnames, _ in os.walk(job):
@@ -116,12 +138,15 @@ def remove_job_folder(job: Path, mounted: bool) -> None:
 
 
 def used_bytes(job: Path, stop_at: int | None = None) -> int:
-    """Bytes of files under ``job`` (links not followed; stops counting past ``stop_at``)."""
+    """Bytes of files under ``job`` (links not followed; stops counting past ``stop_at``).
+
+    Every entry counts at least 4 KiB (a million empty files fill a disk's inodes too).
+    """
     total = 0
-    for dirpath, _dirnames, filenames in os.walk(job):
-        for name in filenames:
+    for dirpath, dirnames, filenames in os.walk(job):
+        for name in filenames + dirnames:
             try:
-                total += os.lstat(os.path.join(dirpath, name)).st_blocks * 512
+                total += max(4096, os.lstat(os.path.join(dirpath, name)).st_blocks * 512)
             except OSError:
                 pass
             if stop_at is not None and total > stop_at:
