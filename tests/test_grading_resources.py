@@ -84,3 +84,50 @@ def test_grade_refuses_an_unsafe_job_root(tmp_path):
         grade.main(["--tests", str(ROOT / "solutions" / "hidden_tests" / "hw01.py"),
                     "--submissions", str(subs), "--out", str(tmp_path / "out"),
                     "--sandbox", "none", "--job-root", str(target)])  # fmt: skip
+
+
+SANDBOX_OK, SANDBOX_WHY = grade.sandbox.bwrap_works()
+needs_sandbox = pytest.mark.skipif(not SANDBOX_OK, reason=f"no sandbox: {SANDBOX_WHY}")
+
+
+def test_sandbox_bounds_tmp_and_shm_and_keeps_the_rest_read_only(tmp_path):
+    if grade.sandbox.bwrap_path() is None:
+        pytest.skip("bubblewrap is not installed")
+    limits = grade.sandbox.Limits(tmp_bytes=3 << 20)
+    argv = grade.sandbox.bwrap_argv(tmp_path, limits)
+    joined = " ".join(argv)
+    assert f"--size {3 << 20} --tmpfs /tmp" in joined
+    assert f"--size {3 << 20} --tmpfs /dev/shm" in joined
+    assert argv[-4:] == ["--remount-ro", "/dev", "--remount-ro", "/"]
+
+
+@needs_sandbox
+def test_preflight_names_the_path_the_sandbox_cannot_see(tmp_path):
+    hidden = str(ROOT / "tools" / "grade.py")  # tools/ is never shown to a kernel
+    problem = grade.sandbox.visibility_problem(tmp_path, grade.sandbox.Limits(), extra=(hidden,))
+    assert problem == f"the sandbox cannot see {hidden}"
+
+
+@needs_sandbox
+@pytest.mark.timeout(180)
+def test_preflight_passes_with_the_environment_reached_through_a_link(tmp_path):
+    """The course's venv through a symbolic link: the link is remade in the sandbox."""
+    import subprocess
+    import sys
+
+    link = tmp_path / "shared-env"
+    os.symlink(Path(sys.prefix).resolve(), link)
+    script = (
+        "import sys\n"
+        "from _homework_support import load\n"
+        f"grade = load('g', {str(ROOT / 'tools' / 'grade.py')!r})\n"
+        "assert sys.executable.startswith(sys.argv[1]), sys.executable\n"
+        "print('PROBLEM:' + grade.check_sandbox(grade.Options(mode='bwrap')))\n"
+    )
+    env = {**os.environ, "PYTHONPATH": f"{ROOT}{os.pathsep}{ROOT / 'tests'}"}
+    proc = subprocess.run(
+        [str(link / "bin" / "python"), "-c", script, str(link)],
+        capture_output=True, text=True, timeout=170, env=env, cwd=str(ROOT),
+    )  # fmt: skip
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    assert "PROBLEM:\n" in proc.stdout, proc.stdout
