@@ -15,7 +15,11 @@ A notebook directly in ``--submissions`` is the student named by its file name
 (``alice.ipynb`` -> ``alice``); a notebook inside a sub-folder belongs to the student named by
 that top-level folder (``alice/hw01.ipynb`` -> ``alice``).  When one student has several
 notebooks, the most recently modified one is graded and the others are listed in the notes
-and in the status.  Feedback file names are unique per student.
+and in the status.  Only regular files inside ``--submissions`` are opened, never through a
+link: a notebook or folder that is a symbolic link (or a FIFO, a hard link) is reported as "a
+link, not graded" (``tools/grading/intake.py``).  Names are written escaped and unique even
+ignoring case, no CSV cell is a formula (``tools/grading/safe_names.py``); job folders live in a
+private folder (``tools/grading/jobroot.py``).
 
 The trust boundary
 ------------------
