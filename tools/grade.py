@@ -23,6 +23,11 @@ When one student has several notebooks, the one with the newest valid manifest t
 time) is graded and the status says ``several notebooks``.  Flags (edited after submit, manifest
 time or id disagreeing, late, wrong or shared variant code) go into the status column, the
 feedback and the summary.
+Only regular files inside ``--submissions`` are opened, never through a link: a notebook or
+folder that is a symbolic link (or a FIFO, a hard link) is reported as "a link, not graded"
+(``tools/grading/intake.py``).  Names are written escaped and unique even ignoring case, and no
+CSV cell is a formula (``tools/grading/safe_names.py``); job folders live in a private folder
+(``tools/grading/jobroot.py``).
 
 The trust boundary
 ------------------
@@ -77,10 +82,8 @@ if __name__ == "__main__":  # run as printed (tools/grade.py ...): with the cour
         _os.execv(str(_venv / "bin" / "python"), [str(_venv / "bin" / "python"), *_sys.argv])
 
 import argparse
-import hashlib
 import json
 import os
-import re
 import sys
 import threading
 from concurrent.futures import ThreadPoolExecutor, as_completed
@@ -89,14 +92,16 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from grading import identity, reports, sandbox
+from grading import identity, intake, jobroot, reports, safe_names, sandbox
 from grading.runner import (
     DEFAULT_CELL_TIMEOUT,
     DEFAULT_QUESTION_TIMEOUT,
     DEFAULT_TIME_LIMIT,
     UNSANDBOXED_NOTE,
     HiddenTests,
+    Options,
     Result,
+    check_sandbox,
     grade_notebook,
     grade_payload,
 )
@@ -140,12 +145,12 @@ def _code(text: str | None) -> str:
 
 def plan(
     folder: Path, roster=None, *, homework: str = "", secret: bytes | None = None,
-    variants_on: bool = False,
+    variants_on: bool = False, refused: dict | None = None,
 ) -> list[Item]:  # fmt: skip
     """Every student's submission, identified once, sorted by student (see the docstring)."""
     index = identity.RosterIndex(roster) if roster is not None else None
     groups: dict[str, list[tuple[identity.Found, identity.Identity]]] = {}
-    for found in identity.discover(folder):
+    for found in identity.discover(folder, refused):
         who = identity.identify(found, index)
         groups.setdefault(who.student, []).append((found, who))
     items = []
@@ -206,28 +211,15 @@ def _variant_flags(items: list[Item], roster, homework: str, secret: bytes) -> N
 
 
 def discover(folder: Path) -> list[tuple[str, Path, list[Path]]]:
-    """``(student, notebook to grade, other notebooks of that student)``, without a roster."""
+    """``(student, notebook to grade, other notebooks of that student)``, without a roster.
+
+    Links and files that are not regular are left out (``intake.scan`` reports them)."""
     return [(i.student, i.path, [o.path for o in i.others]) for i in plan(folder)]
-
-
-_SAFE = re.compile(r"[A-Za-z0-9._-]")
 
 
 def feedback_names(students: list[str]) -> dict[str, str]:
     """A distinct, filesystem-safe file stem per student (distinct even case-insensitively)."""
-
-    def slug(s: str) -> str:
-        text = "".join(ch if _SAFE.fullmatch(ch) else f"%{ord(ch):02X}" for ch in s)
-        return text.lstrip(".") or "_"
-
-    names = {s: slug(s) for s in students}
-    counts: dict[str, int] = {}
-    for n in names.values():
-        counts[n.lower()] = counts.get(n.lower(), 0) + 1
-    for s, n in names.items():
-        if counts[n.lower()] > 1 or len(n) > 120:
-            names[s] = f"{n[:100]}-{hashlib.sha256(s.encode()).hexdigest()[:10]}"
-    return names
+    return safe_names.file_stems(students)
 
 
 def feedback_markdown(r: Result, tests: HiddenTests, late=None) -> str:
@@ -250,6 +242,7 @@ class Reports:
         self.tests, self.out, self.fmt, self.roster, self.late = tests, out, fmt, roster, late
         self.results: dict[str, Result] = {r.student: r for r in keep or []}
         self.labels: dict[str, dict[str, str]] = {}
+        self.stems: dict[str, str] = safe_names.file_stems(self.results)
         self.lock = threading.Lock()
         (out / "feedback").mkdir(parents=True, exist_ok=True)
 
@@ -257,17 +250,23 @@ class Reports:
         if self.roster is not None:
             r.lms = asdict(entry) if entry is not None else None
 
+    def reserve(self, students) -> None:
+        """Give every student of the batch a feedback file name now (stable whatever order)."""
+        with self.lock:
+            self.stems = safe_names.file_stems(students, self.stems)
+
     def add(self, r: Result) -> None:
+        safe_names.scrub(r)  # text from the submission that UTF-8 cannot encode is escaped
         with self.lock:
             self.results[r.student] = r
             self.write(only=r)
 
     def write(self, only: Result | None = None) -> None:
         results = list(self.results.values())
-        names = feedback_names(sorted(self.results))
+        self.stems = safe_names.file_stems(self.results, self.stems)
         for r in [only] if only is not None else results:
             reports.atomic_write(
-                self.out / "feedback" / f"{names[r.student]}.md",
+                self.out / "feedback" / f"{self.stems[r.student]}.md",
                 reports.feedback_markdown(r, self.tests, self.late),
             )
         table = reports.scores_table(
@@ -336,6 +335,22 @@ def resolve_sandbox(choice: str) -> tuple[str, str]:
     return "none", f"WARNING: {why}; " + UNSANDBOXED_NOTE
 
 
+def _refused_result(student: str, entries, tests: HiddenTests, mode: str) -> Result:
+    """The row of a student none of whose files was opened (links, FIFOs, ...): 0, and why."""
+    reason = entries[0][1]
+    r = Result(
+        student,
+        dict.fromkeys(tests.points, 0.0),
+        dict.fromkeys(tests.points, f"not graded: the submission is {reason.split(',')[0]}"),
+        status=reason,
+        sandbox=mode,
+    )
+    r.file = entries[0][0]
+    r.run_notes += intake.refusal_note(entries)
+    r.run_notes.append("the grader opens only regular files inside the submissions folder")
+    return r
+
+
 NOT_GRADED = "not graded"
 
 
@@ -401,6 +416,18 @@ def main(argv: list[str] | None = None) -> int:
     )
     p.add_argument("--memory", type=float, default=4.0, help="address-space limit, GiB")
     p.add_argument("--output-limit", type=int, default=1 << 20, help="bytes of output per cell")
+    p.add_argument(
+        "--disk", type=float, default=512, help="MB a submission may write in its job folder"
+    )
+    p.add_argument(
+        "--tmp-size", type=float, default=64, help="MB of the sandbox's /tmp and of its /dev/shm"
+    )
+    p.add_argument(
+        "--job-root",
+        type=Path,
+        help="folder for job folders (created 0700, or must be yours and 0700; "
+        "default: a fresh private temp folder)",
+    )
     p.add_argument("--roster", type=Path, help="CSV: id[, submission, name, email]")
     p.add_argument(
         "--format",
@@ -444,15 +471,17 @@ def main(argv: list[str] | None = None) -> int:
             "submission is graded on the default data",
             file=sys.stderr,
         )
+    refused: dict[str, list[tuple[str, str]]] = {}  # links, FIFOs: never read
     found = plan(args.submissions, roster, homework=tests.homework, secret=secret,
-                 variants_on=tests.variants)  # fmt: skip
+                 variants_on=tests.variants, refused=refused)  # fmt: skip
     if args.only is not None:
         found = [i for i in found if args.only == i.student
                  or (i.who.entry is not None and args.only in (i.who.entry.id, *i.who.entry.aliases))]  # fmt: skip
-        if not found:
+        refused = {k: v for k, v in refused.items() if k == args.only}
+        if not found and not refused:
             print(f"--only {args.only}: no submission of that student", file=sys.stderr)
             return 2
-    if not found:
+    if not found and not refused:
         print(f"no .ipynb files under {args.submissions}", file=sys.stderr)
         return 1
     late = (reports.LatePolicy(reports.parse_deadline(args.deadline),
@@ -465,14 +494,32 @@ def main(argv: list[str] | None = None) -> int:
         memory_bytes=int(args.memory * sandbox.GIB),
         cpu_seconds=int(args.time_limit) + 30,
         output_bytes=args.output_limit,
+        disk_bytes=int(args.disk * (1 << 20)),
+        tmp_bytes=int(args.tmp_size * (1 << 20)),
     )
+    if args.job_root is not None:
+        try:
+            jobroot.check_root(args.job_root)
+        except (ValueError, OSError) as exc:
+            raise SystemExit(f"--job-root: {exc}") from None
     options = {
         "cell_timeout": args.cell_timeout,
         "time_limit": args.time_limit,
         "question_timeout": args.question_timeout,
         "mode": mode,
         "limits": limits,
+        "job_root": str(args.job_root) if args.job_root is not None else None,
     }
+    if mode == "bwrap":  # prove it once, before anyone is graded
+        problem = check_sandbox(Options(**options))
+        if problem:
+            print(
+                f"the sandbox cannot run the course's kernels: {problem}. Nothing was graded "
+                "(a link to the environment is followed for you; bind or copy what is missing, "
+                "or use --sandbox none for trusted submissions only).",
+                file=sys.stderr,
+            )
+            return 2
     args.out.mkdir(parents=True, exist_ok=True)
     keep = None
     if args.only is not None:  # the regraded submissions replace their earlier rows
@@ -481,6 +528,13 @@ def main(argv: list[str] | None = None) -> int:
         keep = [r for r in load_previous(args.out, tests)
                 if r.student not in students and r.file not in files]  # fmt: skip
     out = Reports(tests, args.out, fmt=args.format, roster=roster, late=late, keep=keep)
+    out.reserve([i.student for i in found] + list(refused))
+    for student, entries in refused.items():
+        if not any(i.student == student for i in found):  # nothing of theirs was opened
+            r = _refused_result(student, entries, tests, mode)
+            out.lookup(r)
+            out.add(r)
+            print(f"{r.student}: not graded ({r.status})", flush=True)
 
     def payload(item: Item) -> dict:
         opts = dict(options)
@@ -491,12 +545,13 @@ def main(argv: list[str] | None = None) -> int:
             "tests_source": tests.source,
             "tests_name": str(args.tests),
             "student": item.student,
-            "notebook": item.path.read_bytes(),
+            "notebook": item.found.data,  # the bytes read once, no link followed (intake)
             "options": opts,
         }
 
     def done(item: Item, data: dict) -> None:
         r = _finish_result(Result(**data), item, args, late)
+        r.run_notes += intake.refusal_note(refused.get(r.student, []))
         out.lookup(r, item.who.entry)
         out.add(r)
         print(

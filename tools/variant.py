@@ -33,7 +33,6 @@ if __name__ == "__main__":  # run as printed (tools/grade.py ...): with the cour
         _os.execv(str(_venv / "bin" / "python"), [str(_venv / "bin" / "python"), *_sys.argv])
 
 import argparse
-import csv
 import importlib.util
 import io
 import json
@@ -47,6 +46,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 sys.path.insert(0, str(ROOT))
 
 from grading import reports  # noqa: E402
+from grading.safe_names import safe_csv_writer  # noqa: E402
 
 from course_lib import variants  # noqa: E402
 
@@ -88,7 +88,7 @@ def _homework(hw: str) -> str:
 def codes_csv(hw: str, secret: bytes, roster: dict) -> str:
     """``id,name,email,code`` for every roster entry (codes by the LMS id, as the grader makes them)."""
     buf = io.StringIO()
-    w = csv.writer(buf, lineterminator="\n")
+    w = safe_csv_writer(buf, lineterminator="\n")  # a roster name is never run as a formula
     w.writerow(["id", "name", "email", "code"])
     for entry in roster.values():
         w.writerow([entry.id, entry.name, entry.email, variants.code_for(secret, hw, entry.id)])

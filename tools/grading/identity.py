@@ -26,11 +26,13 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 from datetime import datetime, timedelta, timezone
-from pathlib import Path
+from pathlib import Path, PurePosixPath
 
 import nbformat
 
 from course_lib.submit import manifest_of
+
+from . import intake
 
 #: the flags an instructor acts on, as they appear in the status column (``ok; late; ...``)
 EDITED = "edited after submit"
@@ -72,6 +74,7 @@ class Found:
     manifest: dict | None = None  # course_lib.submit.manifest_of, or None
     mtime: datetime | None = None
     variant_used: str | None = None  # the VARIANT written in the notebook (None: none found)
+    data: bytes | None = None  # the bytes read once, without following links (what is graded)
 
     @property
     def manifest_time(self) -> datetime | None:
@@ -117,15 +120,25 @@ def _submit_names(stem: str) -> list[str]:
     return [m["id"]] if m else []
 
 
-def read_notebook_facts(found: Found) -> Found:
-    """The manifest, the file time and the ``VARIANT`` written in the notebook (never raises)."""
+def read_notebook_facts(found: Found, data: bytes | None = None, mtime: float | None = None) -> Found:
+    """The manifest, the file time and the ``VARIANT`` written in the notebook (never raises).
+
+    ``data`` and ``mtime`` are the bytes and time the grader's intake read (no link followed);
+    without them the file at ``found.path`` is read (tests and tools on trusted folders).
+    """
     try:
-        st = found.path.stat()
-        found.mtime = datetime.fromtimestamp(st.st_mtime, tz=timezone.utc)
-        if st.st_size > MAX_NOTEBOOK_BYTES:
+        if data is None:
+            st = found.path.stat()
+            mtime = st.st_mtime
+            if st.st_size > MAX_NOTEBOOK_BYTES:
+                return found
+            data = found.path.read_bytes()
+        found.data = data
+        if mtime is not None:
+            found.mtime = datetime.fromtimestamp(mtime, tz=timezone.utc)
+        if len(data) > MAX_NOTEBOOK_BYTES:
             return found
-        text = found.path.read_text(encoding="utf-8")
-        nb = nbformat.reads(text, as_version=4)  # the form submit() computed its digest on
+        nb = nbformat.reads(data.decode("utf-8"), as_version=4)  # the form submit() digested
     except Exception:  # unreadable or not a notebook: the grader reports it
         return found
     try:
@@ -143,19 +156,34 @@ def read_notebook_facts(found: Found) -> Found:
     return found
 
 
-def discover(folder: Path) -> list[Found]:
-    """Every notebook under ``folder`` (hidden folders and checkpoints skipped), with its facts."""
+def discover(folder: Path, refused: dict[str, list[tuple[str, str]]] | None = None) -> list[Found]:
+    """Every notebook under ``folder`` (hidden folders and checkpoints skipped), with its facts.
+
+    Files are found and read by :mod:`intake`: never through a link, only regular files with
+    one name inside ``folder``.  What it refuses is added to ``refused`` (shown student ->
+    ``[(shown path, reason)]``) and never read.  Names are shown escaped
+    (:func:`safe_names.display_name`), so any bytes a name has are safe to write.
+    """
+    folder = Path(folder)
+    scan = intake.scan(folder)
+    if refused is not None:
+        for student, entries in scan.refused.items():
+            refused.setdefault(student, []).extend(entries)
     out = []
-    for f in sorted(folder.rglob("*.ipynb")):
-        rel = f.relative_to(folder)
-        if ".ipynb_checkpoints" in rel.parts or any(p.startswith(".") for p in rel.parts):
-            continue
-        if f.is_symlink() or not f.is_file():
-            continue
-        found = parse_name(rel)
-        found.path = f
-        out.append(read_notebook_facts(found))
-    return out
+    for student, path, others in scan.found:
+        for f in [path, *others]:
+            try:
+                data = intake.read_regular(folder, f)
+            except intake.Refused as exc:
+                if refused is not None:
+                    refused.setdefault(student, []).append(
+                        (intake.shown_path(f, folder), exc.reason)
+                    )
+                continue
+            found = parse_name(PurePosixPath(intake.shown_path(f, folder)))
+            found.path = f
+            out.append(read_notebook_facts(found, data, scan.mtimes.get(f)))
+    return sorted(out, key=lambda x: x.rel)
 
 
 class RosterIndex:

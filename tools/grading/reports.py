@@ -32,6 +32,8 @@ from dataclasses import dataclass, field
 from datetime import datetime, timezone
 from pathlib import Path
 
+from .safe_names import safe_csv_writer
+
 FORMATS = ("plain", "canvas", "moodle")
 
 
@@ -237,7 +239,7 @@ def scores_table(
     submission matched no roster entry is never in them (the summary lists it)."""
     questions = list(tests.points)
     buf = io.StringIO()
-    w = csv.writer(buf, lineterminator="\n")
+    w = safe_csv_writer(buf, lineterminator="\n")  # no cell is ever a formula
     rows = sorted(results, key=lambda r: r.student)
     matched = [r for r in rows if r.lms]
     kind = getattr(roster, "kind", "plain")

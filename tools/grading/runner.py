@@ -13,7 +13,6 @@ import functools
 import json
 import os
 import secrets
-import shutil
 import signal
 import stat
 import subprocess
@@ -29,7 +28,7 @@ import nbformat
 
 from course_lib.submit import manifest_of
 
-from . import protocol, sandbox
+from . import jobroot, protocol, sandbox
 
 DEFAULT_CELL_TIMEOUT = 60.0
 DEFAULT_TIME_LIMIT = 300.0
@@ -134,6 +133,7 @@ class Options:
     question_timeout: float = DEFAULT_QUESTION_TIMEOUT
     mode: str = "bwrap"  # "bwrap" or "none" (resolved from --sandbox auto by main)
     limits: sandbox.Limits = field(default_factory=sandbox.Limits)
+    job_root: str | None = None  # None: a fresh private folder (grading.jobroot)
 
 
 # ------------------------------------------------------------------------------ kernels
@@ -158,8 +158,9 @@ def _client_class():
         job: Path
         kernel_cmd: list[str]
         output_limit: int
-        output_used: int = 0
-        flooded: bool = False
+        output_used: int = 0  # bytes of this cell's output messages, measured on the wire
+        comm_used: int = 0  # bytes of widget (comm) messages over the kernel's life
+        flooded: str = ""  # which limit a message broke (the kernel is killed)
 
         def create_kernel_manager(self):
             specs = _SandboxSpecs()
@@ -173,19 +174,128 @@ def _client_class():
                 transport="ipc",
                 connection_file=str(self.job / f"k-{uuid.uuid4().hex[:12]}.json"),
             )
+            # every message is measured before it is decoded (and the kernel killed past the
+            # limit); a frame beyond the backstop is not even received (zmq drops it)
+            self.km.session = _session_class()(parent=self.km, on_wire=self.on_wire)
+            self.km.client_factory = _wire_client_class(max(WIRE_BACKSTOP, 4 * self.output_limit))
             return self.km
 
+        def on_wire(self, msg_type: str, size: int) -> bool:
+            """Count a message's bytes against the limits; False: drop it, undecoded."""
+            if self.flooded:
+                return False
+            if msg_type in _OUTPUT_TYPES:
+                self.output_used += size
+                if self.output_used > self.output_limit:
+                    self.flooded = f"it printed more than {self.output_limit} bytes of output"
+            elif msg_type.startswith("comm"):
+                self.comm_used += size
+                if self.comm_used > self.output_limit:
+                    self.flooded = (
+                        f"its widgets sent more than {self.output_limit} bytes of messages "
+                        "(the output limit)"
+                    )
+            elif size > self.output_limit + (64 << 10):
+                self.flooded = f"it sent a message larger than {self.output_limit} bytes"
+            if self.flooded:
+                _kill_kernel(self)
+                return False
+            return True
+
         def output(self, outs, msg, display_id, cell_index):
-            size = len(json.dumps(msg.get("content", {}), default=str))
-            self.output_used += size
-            if self.output_used > self.output_limit:
-                if not self.flooded:
-                    self.flooded = True
-                    _kill_kernel(self)
+            if self.flooded:
                 return None
             return super().output(outs, msg, display_id, cell_index)
 
+        def handle_comm_msg(self, outs, msg, cell_index):
+            return None  # widget state is never kept (it is counted in on_wire)
+
     return _Client
+
+
+#: a message frame larger than this is dropped by zmq, undecoded (the output limit, checked
+#: on every message below it, stops the kernel long before)
+WIRE_BACKSTOP = 64 << 20
+_OUTPUT_TYPES = frozenset(
+    {"stream", "display_data", "execute_result", "error", "update_display_data", "clear_output"}
+)
+_MAX_HEADER = 64 << 10
+
+
+def _frame_size(frame) -> int:
+    try:
+        return len(frame)
+    except TypeError:
+        return len(frame.bytes)
+
+
+@functools.lru_cache(maxsize=1)
+def _session_class():
+    from jupyter_client.session import Session
+    from traitlets import Any
+
+    class WireSession(Session):
+        """A session that measures each message on the wire before decoding it."""
+
+        on_wire = Any(None)  # a trait: Session.clone() (the client's copy) keeps it
+
+        def deserialize(self, msg_list, content=True, copy=True):
+            size = sum(_frame_size(f) for f in msg_list)
+            head = msg_list[1] if len(msg_list) > 1 else b""
+            msg_type = ""
+            if _frame_size(head) <= _MAX_HEADER:
+                try:
+                    msg_type = str(json.loads(bytes(head)).get("msg_type", ""))
+                except (ValueError, AttributeError, TypeError):
+                    msg_type = ""
+            if self.on_wire is None or self.on_wire(msg_type, size):
+                return super().deserialize(msg_list, content=content, copy=copy)
+            return _dropped(msg_list)
+
+    return WireSession
+
+
+def _dropped(msg_list) -> dict:
+    """What stands for a message that was not decoded: a harmless 'busy' for its parent."""
+    parent = {}
+    if len(msg_list) > 2 and _frame_size(msg_list[2]) <= _MAX_HEADER:
+        try:
+            parent = json.loads(bytes(msg_list[2]))
+        except (ValueError, TypeError):
+            parent = {}
+    header = {"msg_id": uuid.uuid4().hex, "msg_type": "status"}
+    return {
+        "header": header,
+        "msg_id": header["msg_id"],
+        "msg_type": "status",
+        "parent_header": parent if isinstance(parent, dict) else {},
+        "metadata": {},
+        "content": {"execution_state": "busy", "status": "aborted"},
+        "buffers": [],
+    }
+
+
+@functools.lru_cache(maxsize=8)
+def _wire_client_class(max_bytes: int):
+    """A kernel client whose sockets refuse (disconnect) any frame above ``max_bytes``."""
+    import zmq
+    import zmq.asyncio
+    from jupyter_client.asynchronous import AsyncKernelClient
+    from traitlets import default
+
+    class WireLimitedClient(AsyncKernelClient):
+        @default("context")
+        def _limited_context(self):
+            ctx = zmq.asyncio.Context()
+            ctx.setsockopt(zmq.MAXMSGSIZE, max_bytes)
+            return ctx
+
+        def stop_channels(self) -> None:
+            super().stop_channels()
+            if not self.context.closed:
+                self.context.destroy(linger=100)
+
+    return WireLimitedClient
 
 
 def _kill_kernel(client) -> None:
@@ -219,12 +329,14 @@ class _Kernel:
     def start(self) -> None:
         from nbclient.exceptions import DeadKernelError
 
-        self.cgroup = sandbox.ProcessGroupLimit(self.opts.limits.processes)
+        self.cgroup = sandbox.SandboxGroups(self.opts.limits)
         client = _client_class()(
             nbformat.v4.new_notebook(),
             timeout=None,
             allow_errors=True,
             shutdown_kernel="immediate",
+            record_timing=False,
+            store_widget_state=False,
             shell_timeout_interval=1,  # notice a dead kernel within a second
             startup_timeout=60,
             resources={"metadata": {"path": str(self.job)}},
@@ -256,7 +368,7 @@ class _Kernel:
         if self.remaining() <= 0:
             raise _WallLimit
         client = self.client
-        client.output_used, client.flooded = 0, False
+        client.output_used = 0
         self._timeout = max(0.5, min(timeout, self.remaining()))
         cell = nbformat.v4.new_code_cell(source)
         client.nb.cells.append(cell)
@@ -271,18 +383,17 @@ class _Kernel:
             ) from None
         except (DeadKernelError, RuntimeError, OSError) as exc:
             if client.flooded:
+                raise _CellFailed(f"{client.flooded}; the kernel was stopped") from None
+            if self.cgroup is not None and self.cgroup.memory_exhausted():
                 raise _CellFailed(
-                    f"it printed more than {self.opts.limits.output_bytes} bytes of output; "
-                    "the kernel was stopped"
+                    f"it used more than the memory limit of {self.opts.limits.memory_bytes >> 20}"
+                    " MB (files in /tmp and /dev/shm count: they are memory)"
                 ) from None
             raise _CellFailed(f"the kernel died ({type(exc).__name__})") from None
         finally:
             client.nb.cells[index] = nbformat.v4.new_code_cell("")  # keep no outputs around
         if client.flooded:
-            raise _CellFailed(
-                f"it printed more than {self.opts.limits.output_bytes} bytes of output; "
-                "the kernel was stopped"
-            )
+            raise _CellFailed(f"{client.flooded}; the kernel was stopped")
         return cell.get("outputs", [])
 
     def stop(self) -> None:
@@ -315,6 +426,8 @@ class _Session:
         self.errors: dict[int, str] = {}
         self.broken = ""  # why no kernel can be had any more
         self.attempts = 0
+        self.responses = job  # where the probe writes its answers (grade_notebook sets it)
+        self.mounted = False  # is the job folder a size-limited tmpfs (else checked per cell)
 
     def ensure(self) -> _Kernel | None:
         """A kernel that has run every (non-skipped) student cell, or None."""
@@ -332,6 +445,7 @@ class _Session:
                     if k in self.skipped:
                         continue
                     outputs = kernel.run(source, self.opts.cell_timeout)
+                    self._check_disk()
                     err = _error_text(outputs)
                     if err:
                         self.errors.setdefault(k, err)
@@ -347,6 +461,8 @@ class _Session:
                 )
             except _CellFailed as exc:
                 kernel.stop()
+                if exc.why.startswith(_DISK):  # the cells are run again: their files too
+                    _clear_job(self.job, keep={"submission.ipynb", self.responses.name})
                 if k < 0 or k in self.skipped:
                     self.broken = f"the notebook could not be run: {exc.why}"
                     self.result.run_notes.append(self.broken)
@@ -356,6 +472,12 @@ class _Session:
                 self.result.run_notes.append(f"code cell {k + 1} was skipped: {exc.why}")
                 self.result.status = "partly skipped"
         return self.kernel
+
+    def _check_disk(self) -> None:
+        """Without a size-limited tmpfs, the job folder's size is checked after every cell."""
+        limit = self.opts.limits.disk_bytes
+        if not self.mounted and limit and jobroot.used_bytes(self.job, stop_at=limit) > limit:
+            raise _CellFailed(f"{_DISK} of {limit >> 20} MB in its job folder")
 
     def transport(self, question_timeout: float):
         """Requests of one question; its clock starts once a kernel is ready for it."""
@@ -373,7 +495,7 @@ class _Session:
                 clock["deadline"] = time.monotonic() + question_timeout
             question_deadline = clock["deadline"]
             # an unguessable name: code the student left running cannot plant a response
-            response = self.job / f".response-{secrets.token_hex(12)}.json"
+            response = self.responses / f".response-{secrets.token_hex(12)}.json"
             source = (
                 "__import__('course_lib._probe', fromlist=['serve']).serve("
                 f"{json.dumps(request)!r}, globals(), {str(response)!r})"
@@ -411,6 +533,22 @@ class _Session:
         if self.kernel is not None:
             self.kernel.stop()
             self.kernel = None
+
+
+_DISK = "it wrote more than the disk limit"
+
+
+def _clear_job(job: Path, keep: set[str]) -> None:
+    for entry in os.scandir(job):
+        if entry.name in keep:
+            continue
+        if entry.is_dir(follow_symlinks=False):
+            jobroot.remove_job_folder(Path(entry.path), False)
+        else:
+            try:
+                os.unlink(entry.path)
+            except OSError:
+                pass
 
 
 def _read_limited(path: Path, limit: int) -> bytes | None:
@@ -455,10 +593,18 @@ def _read_notebook(path: Path) -> tuple[nbformat.NotebookNode | None, str]:
     except OSError as exc:
         return None, f"the file could not be read ({type(exc).__name__})"
     try:
+        data = json.loads(text)
+    except json.JSONDecodeError as exc:  # where, never what: the bytes may be anyone's secret
+        where = f"line {exc.lineno}, column {exc.colno}"
+        return None, f"the file is not a valid notebook (not JSON: {where})"
+    except RecursionError:
+        return None, "the file is not a valid notebook (nested too deeply)"
+    if not isinstance(data, dict) or not isinstance(data.get("cells"), list):
+        return None, "the file is not a valid notebook (no cells)"
+    try:
         nb = nbformat.reads(text, as_version=4)
-    except Exception as exc:  # malformed JSON or not a notebook at all
-        first = str(exc).strip().splitlines()[0] if str(exc).strip() else type(exc).__name__
-        return None, f"the file is not a valid notebook ({first[:200]})"
+    except Exception as exc:  # not a notebook: the type of error only, no text from the file
+        return None, f"the file is not a valid notebook ({type(exc).__name__})"
     if not isinstance(nb.get("cells"), list):
         return None, "the file is not a valid notebook (no cells)"
     return nb, ""
@@ -471,10 +617,21 @@ def _error_text(outputs) -> str | None:
     return None
 
 
-def _jobs_base() -> Path:
-    base = Path(tempfile.gettempdir()) / "course-grader"
-    base.mkdir(mode=0o700, exist_ok=True)
-    return base
+def _note_disk(job: Path, mounted: bool, limit: int, result: Result) -> None:
+    """Say so when the submission filled its job folder (its own writes failed, nobody else's)."""
+    try:
+        if mounted:
+            sv = os.statvfs(job)
+            full = sv.f_bavail * sv.f_frsize < (1 << 20)
+        else:
+            full = jobroot.used_bytes(job, stop_at=limit) > limit
+    except OSError:
+        return
+    if full:
+        result.run_notes.append(
+            f"the job folder reached the disk limit of {limit >> 20} MB "
+            "(writes past it failed with 'No space left on device')"
+        )
 
 
 def _note_variant_mismatch(session, timeout: float, variant: str, result: Result) -> None:
@@ -484,7 +641,9 @@ def _note_variant_mismatch(session, timeout: float, variant: str, result: Result
     except Exception:  # no VARIANT, a broken notebook: the questions will say what is wrong
         return
     mine = variant.upper()
-    theirs = used.strip().upper().replace("-", "").replace(" ", "") if isinstance(used, str) else None
+    theirs = (
+        used.strip().upper().replace("-", "").replace(" ", "") if isinstance(used, str) else None
+    )
     if theirs != mine:
         shown = f"code {used!r}" if theirs else "no code (the data printed in the notebook)"
         result.run_notes.append(
@@ -504,9 +663,12 @@ def grade_notebook(
     mode: str = "bwrap",
     limits: sandbox.Limits | None = None,
     variant: str = "",
+    job_root: str | None = None,
 ) -> Result:
     """Run one submission in a sandbox and grade it here; never raises for a bad submission."""
-    opts = Options(cell_timeout, time_limit, question_timeout, mode, limits or sandbox.Limits())
+    opts = Options(
+        cell_timeout, time_limit, question_timeout, mode, limits or sandbox.Limits(), job_root
+    )
     start = time.monotonic()
     questions = list(tests.points)
     result = Result(
@@ -540,9 +702,11 @@ def grade_notebook(
         result.variant = variant
         if variant:
             result.run_notes.append(f"graded on the student's own data (variant {variant})")
-    job = Path(tempfile.mkdtemp(prefix="job-", dir=_jobs_base()))
+    job, mounted = jobroot.job_folder(jobroot.job_root(job_root), opts.limits.disk_bytes)
     session = _Session(job, cells, opts, start + time_limit, result)
     try:
+        session.responses = jobroot.response_folder(job, 4 * protocol.MAX_RESPONSE_BYTES, mounted)
+        session.mounted = mounted
         (job / "submission.ipynb").write_bytes(path.read_bytes())  # the kernel's working copy
         session.ensure()
         if variant_data is not None and variant:
@@ -562,9 +726,16 @@ def grade_notebook(
         for k in sorted(session.errors):
             if len(result.run_notes) < 12:
                 result.run_notes.append(f"code cell {k + 1} raised {session.errors[k]}")
+        if any("[Errno 28]" in e for e in session.errors.values()):
+            lim = opts.limits
+            result.run_notes.append(
+                f"'No space left on device' is a limit of the grader: /tmp and /dev/shm hold "
+                f"{lim.tmp_bytes >> 20} MB each, the job folder {lim.disk_bytes >> 20} MB"
+            )
     finally:
         session.close()
-        shutil.rmtree(job, ignore_errors=True)
+        _note_disk(job, mounted, opts.limits.disk_bytes, result)
+        jobroot.remove_job_folder(job, mounted)
     for q in questions:
         if result.fractions.get(q, 0.0) < 1.0 and not result.notes[q]:
             result.notes[q] = "wrong answer"
@@ -572,6 +743,32 @@ def grade_notebook(
         result.run_notes.append(UNSANDBOXED_NOTE)
     result.seconds = round(time.monotonic() - start, 1)
     return result
+
+
+def check_sandbox(opts: Options) -> str:
+    """``""`` when a sandboxed kernel starts with the course's environment, else one message.
+
+    Run once before a batch: the sandbox must see Python, the environment (a venv reached
+    through a link, a conda environment) and ``course_lib``, and a kernel must start and import
+    them.  The message names the path the sandbox could not see.
+    """
+    job, mounted = jobroot.job_folder(jobroot.job_root(opts.job_root), opts.limits.disk_bytes)
+    kernel = None
+    try:
+        problem = sandbox.visibility_problem(job, opts.limits)
+        if problem:
+            return problem
+        kernel = _Kernel(job, opts, time.monotonic() + 120)
+        kernel.start()
+        error = _error_text(kernel.run("import course_lib, numpy", 60))
+        return f"a sandboxed kernel could not import the course: {error}" if error else ""
+    except (_CellFailed, _WallLimit, Exception) as exc:  # any failure here stops the batch
+        why = exc.why if isinstance(exc, _CellFailed) else type(exc).__name__
+        return f"a sandboxed kernel could not be started ({why})"
+    finally:
+        if kernel is not None:
+            kernel.stop()
+        jobroot.remove_job_folder(job, mounted)
 
 
 def grade_payload(payload: dict) -> dict:
@@ -582,7 +779,8 @@ def grade_payload(payload: dict) -> dict:
     """
 
     tests = HiddenTests.from_source(payload["tests_source"], Path(payload["tests_name"]))
-    with tempfile.TemporaryDirectory(prefix="submission-") as tmp:
+    root = jobroot.job_root(payload["options"].get("job_root"))
+    with tempfile.TemporaryDirectory(prefix="submission-", dir=root) as tmp:
         path = Path(tmp) / "submission.ipynb"
         path.write_bytes(payload["notebook"])
         try:
