@@ -7,7 +7,7 @@ time, from the question's data with ``course_lib`` -- never printed::
     from course_lib.checks.lectures import check_number, check_vector, quiz
     check_number("lecture03.q2", my_beta1)
     check_vector("lecture01.q4", my_tangent)      # a plane vector [x, y]
-    quiz("lecture04.q1", "Where is W1?", ["...", "..."], my_answer)
+    quiz("lecture04.q1", my_answer)              # multiple choice: letters
 
 Multiple-choice questions in a lecture are practice: the course grades homework only, and a
 multiple-choice answer can always be found by trying the few letter sets there are.  So the
@@ -21,7 +21,8 @@ this module reads the answers -- the checks are feedback, not a lock.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -173,18 +174,74 @@ def _quartic_order_choice() -> str:  # lecture 5, Q1: β = (1, 100, 0) -- C1 but
     return "c" if g >= 3 else "d"
 
 
-#: question id -> (its option letters, a function returning the right letters)
-_CHOICES: dict[str, tuple[str, Callable[[], str]]] = {
-    "lecture01.q1": ("abcd", lambda: "b, d"),  # unit tangent and curvature are intrinsic
-    "lecture01.q2": ("abc", lambda: "b"),  # Example 1: G1 but not C1
-    "lecture02.q1": ("abcd", lambda: "b"),  # three shape parameters, only β1 > 0
-    "lecture02.q2": ("abcd", lambda: "c"),  # β1 = 2, β2 = 5: G2, not C1
-    "lecture03.q1": ("abcd", _knot_ratio_choice),
-    "lecture03.q3": ("abcd", lambda: "c"),  # κ = 0: the circle degenerates to the tangent line
-    "lecture04.q1": ("abcd", _w1_choice),
-    "lecture05.q1": ("abcd", _quartic_order_choice),
-    "lecture06.q1": ("abcd", lambda: "a"),  # C1 with β1 = 1 (velocity B - A on both sides)
-    "lecture06.q3": ("abcd", lambda: "b"),  # all G2, the outline moved by about 0.01 em
+@dataclass(frozen=True)
+class _Choice:
+    """A practice multiple-choice question: its prompt, its options (a, b, c, ...) and a
+    function returning the right letters."""
+
+    prompt: str
+    options: tuple[str, ...]
+    right: Callable[[], str]
+
+    @property
+    def letters(self) -> str:
+        return "abcdefgh"[: len(self.options)]
+
+
+_CHOICES: dict[str, _Choice] = {
+    "lecture01.q1": _Choice(
+        "Which are intrinsic (equal for equivalent parametrizations)?",
+        ("the velocity vector", "the unit tangent", "the speed", "the curvature"),
+        lambda: "b, d",  # unit tangent and curvature
+    ),
+    "lecture01.q2": _Choice(
+        "q(u) = (2u, u) on [0, 1] and r(t) = (4t + 2, 2t + 1) on [0, 1/2] meet with",
+        ("C1 continuity", "G1 but not C1 continuity", "neither C1 nor G1 continuity"),
+        lambda: "b",  # Example 1 of Barsky & DeRose 1988
+    ),
+    "lecture02.q1": _Choice(
+        "At a G3 joint: how many shape parameters, which positive?",
+        ("2; both", "3; only β1", "3; all three", "4; only β1"),
+        lambda: "b",
+    ),
+    "lecture02.q2": _Choice(
+        "r'(0) = 2 q'(1), r''(0) = 4 q''(1) + 5 q'(1): the joint is",
+        ("C2", "G1 but not G2", "G2 but not C1", "not even G1"),
+        lambda: "c",  # β1 = 2, β2 = 5
+    ),
+    "lecture03.q1": _Choice(
+        "Ratio |p2p3| : |p3p4| for knots 0, 1, 3?",
+        ("1 : 1", "1 : 2", "2 : 1", "1 : 3"),
+        _knot_ratio_choice,
+    ),
+    "lecture03.q3": _Choice(
+        "The osculating circle at an inflection is",
+        ("a point", "a circle of radius 0", "a straight line (radius ∞)", "undefined because T is"),
+        lambda: "c",  # κ = 0: radius 1/|κ| = ∞
+    ),
+    "lecture04.q1": _Choice(
+        "W1 for β1 = 3?",
+        ("V3 + 3 (V3 - V2)", "V3 + (V3 - V2)/3", "3 V3 - V2", "anywhere on the line V2V3"),
+        _w1_choice,
+    ),
+    "lecture05.q1": _Choice(
+        "β1 = 1, β2 = 100, β3 = 0 gives",
+        ("C3", "C1 but not C2", "G3 but not even C1", "neither C1 nor G3"),
+        _quartic_order_choice,
+    ),
+    "lecture06.q1": _Choice(
+        "At an implied on-curve point the two segments are",
+        ("C1 with β1 = 1", "G1 but never C1", "always G2",
+         "G2 exactly when the chord P0 P2 is perpendicular to AB"),
+        lambda: "a",  # velocity B - A on both sides
+    ),
+    "lecture06.q3": _Choice(
+        "After the change",
+        ("the font's on-curve points still lie on the outline",
+         "every joint is G2, but the outline moved by about 0.01 em",
+         "the comb still steps at the four extremes", "the contour is only C1"),
+        lambda: "b",
+    ),
 }
 
 
@@ -286,31 +343,22 @@ def check_vector(question_id: str, answer: object, rtol: float = 1e-9) -> Verdic
     return run_validate(question_id, validate, answer)
 
 
-def quiz(
-    question_id: str,
-    prompt: str,
-    choices: Sequence[str] | Mapping[str, str],
-    answer: object,
-) -> Verdict:
-    """Show a practice multiple-choice question and the verdict on ``answer`` in one output.
+def quiz(question_id: str, answer: object) -> Verdict:
+    """Show a practice multiple-choice question with its options and the verdict on ``answer``.
 
-    ``choices`` is a list (lettered a, b, c, ...) or a mapping letter -> text.  Answers are
-    read like homework choices: case, spaces and order do not matter (``"B, d"`` is
-    ``["d", "b"]``).  Never raises; says only "right" or "not this one".
+    Answers are read like homework choices: case, spaces and order do not matter (``"B, d"``
+    is ``["d", "b"]``).  Never raises; says only "right" or "not this one".
     """
-    if not isinstance(choices, Mapping):
-        choices = {chr(ord("a") + i): c for i, c in enumerate(choices)}
-    lines = "; ".join(f"({k}) {v}" for k, v in choices.items())
     if question_id not in _CHOICES:
-        v = _unknown(question_id, "choice")
-        return Verdict(v.question, False, f"{prompt} {lines} -- {v.message}", v.status)
-    letters, right = _CHOICES[question_id]
+        return _unknown(question_id, "choice")
+    q = _CHOICES[question_id]
+    lines = "; ".join(f"({k}) {v}" for k, v in zip(q.letters, q.options, strict=True))
 
     def validate(a):
-        mine = as_choice(a, letters, "your answer")
-        if mine == as_choice(right(), letters, "the right answer"):
+        mine = as_choice(a, q.letters, "your answer")
+        if mine == as_choice(q.right(), q.letters, "the right answer"):
             return True, "right."
         return False, "not this one -- think again (re-read the statement)."
 
     v = run_validate(question_id, validate, answer)
-    return Verdict(v.question, v.passed, f"{prompt} {lines} -- {v.message}", v.status)
+    return Verdict(v.question, v.passed, f"{q.prompt} {lines} -- {v.message}", v.status)

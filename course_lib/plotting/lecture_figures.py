@@ -1,0 +1,142 @@
+"""The lectures' static figures, one function per figure, so that a figure cell is one line.
+
+Each function takes curves and points the lecture has already computed (no mathematics is
+done here), draws them in the course style and returns the figure.  The notebook cell that
+calls it is named in the docstring; the caption is the lecture's prose around that cell.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import numpy as np
+
+from .constructions import (
+    plot_beta_spline_construction,
+    plot_farin_boehm,
+    plot_stitching,
+)
+from .curvature import plot_curvature_profile
+from .curves import plot_control_polygon, plot_curve
+from .style import new_figure
+
+__all__ = [
+    "bezier_figure",
+    "catmull_rom_figure",
+    "cubic_beta_spline_figure",
+    "curvature_profiles_figure",
+    "degree_raising_figure",
+    "farin_boehm_figure",
+    "g1_stitching_figure",
+    "quadratic_beta_spline_figure",
+]
+
+
+def _bezier(points):
+    from ..curve import PiecewiseBezier  # a container for drawing, no computation
+
+    return PiecewiseBezier([np.asarray(points, dtype=float)])
+
+
+# ------------------------------------------------------------------------ lecture 04
+def bezier_figure(V):
+    """Lecture 04, ``nb04-005`` (Barsky & DeRose 1988, Fig. 4): a cubic and its polygon."""
+    fig, ax = new_figure(figsize=(6.5, 4.4))
+    plot_curve(ax, _bezier(V), points=False)
+    plot_control_polygon(ax, V, labels="$V_{i}$", linestyle="none")
+    ax.set_adjustable("box")
+    ax.set_ylim(-0.3, 3.1)
+    ax.set_title("a cubic Bézier curve and its control polygon")
+    return fig
+
+
+def degree_raising_figure(V, W):
+    """Lecture 04, ``nb04-013`` (Fig. 5): the cubic polygon ``V`` (grey), the quartic ``W``."""
+    fig, ax = new_figure(figsize=(6.5, 4.4))
+    plot_curve(ax, _bezier(W), points=False)
+    plot_control_polygon(ax, V, labels=["", "$V_1$", "$V_2$", ""], color="#999999")
+    plot_control_polygon(ax, W, labels="$W_{i}$")
+    ax.set_adjustable("box")
+    ax.set_ylim(-0.3, 3.1)
+    ax.set_title("degree raising: V (cubic), W (quartic)")
+    return fig
+
+
+def g1_stitching_figure(q_poly, stitched, beta1: float):
+    """Lecture 04, ``nb04-019`` (Figs. 6 and 7): the situation, then the G1 construction."""
+    fig, (a1, a2) = new_figure(2, 1, figsize=(8.8, 5.6))
+    plot_curve(a1, stitched, points=False)
+    plot_control_polygon(a1, q_poly, labels="$V_{i}$", linestyle="none")
+    W_labels = ["", "$W_1$", "$W_2$", "$W_3$"]
+    plot_control_polygon(a1, stitched.segments[1], labels=W_labels, linestyle="none")
+    a1.set_title("two Bézier curves, W₀ = V₃", pad=14)
+    plot_stitching(a2, stitched)
+    a2.set_title(f"G1 stitching, β₁ = {beta1:g}", pad=14)
+    for ax in (a1, a2):
+        ax.margins(y=0.18)
+    return fig
+
+
+def farin_boehm_figure(q_poly, stitched, fb, beta1: float):
+    """Lecture 04, ``nb04-028`` (Fig. 8): the Farin–Boehm construction with its lengths."""
+    fig, ax = new_figure(figsize=(8.6, 4.4))
+    plot_farin_boehm(ax, q_poly, stitched.segments[1], fb.T, beta1, fb.gamma, lengths=True)
+    ax.set_title("Farin–Boehm: G2 stitching, β₁ = 1, β₂ = 1")
+    return fig
+
+
+def catmull_rom_figure(P, curves: Mapping[float, object]):
+    """Lecture 04, ``nb04-044`` (Fig. 9): one panel per β1, and all of them overlaid."""
+    colors = ("black", "#009E73", "#CC79A7")
+    fig, axs = new_figure(2, 2, figsize=(8.8, 4.6))
+    for ax, (beta, cr), color in zip(axs.flat, curves.items(), colors, strict=False):
+        plot_curve(ax, cr, polygon=False, points=False)
+        plot_control_polygon(ax, P, linestyle=":")
+        ax.set_title(f"β₁ = {beta:g}")
+        plot_curve(
+            axs[1, 1],
+            cr,
+            polygon=False,
+            points=False,
+            joints=False,
+            alternate=False,
+            color=color,
+            label=f"β₁ = {beta:g}",
+        )
+    axs[1, 1].set_title("all three")
+    axs[1, 1].legend(loc="lower left")
+    return fig
+
+
+def quadratic_beta_spline_figure(quad, P, betas):
+    """Lecture 04, ``nb04-048`` (Fig. 10): the quadratic G1 Beta-spline's construction;
+    ``betas`` are the β1 of its joints (for the title)."""
+    fig, ax = new_figure(figsize=(8.8, 3.8))
+    plot_beta_spline_construction(ax, quad, P)
+    ax.legend(loc="lower right")
+    values = ", ".join(f"{b:g}" for b in betas)
+    ax.set_title(f"quadratic G1 Beta-spline, β₁ = {values} at the joints")
+    return fig
+
+
+def cubic_beta_spline_figure(cubic, P):
+    """Lecture 04, ``nb04-062`` (Fig. 11 a, b): interior vertices, then junctions and curve."""
+    fig, (a1, a2) = new_figure(2, 1, figsize=(8.8, 6.4))
+    plot_beta_spline_construction(a1, cubic, P, show="interior")
+    plot_beta_spline_construction(a2, cubic, P)
+    a1.set_title("(a) interior Bézier vertices on the legs")
+    a2.set_title("(b) junction vertices on the links, and the curve")
+    for ax in (a1, a2):
+        ax.set(xlim=(-0.8, 11.3), ylim=(-0.7, 3.9))
+        ax.set_aspect("equal", adjustable="box")
+    fig.legend(*a2.get_legend_handles_labels(), loc="outside lower center", ncol=2)
+    return fig
+
+
+def curvature_profiles_figure(curves: Mapping[str, object]):
+    """Lecture 04, ``nb04-062b``: κ against arc length, one panel per ``title: curve``."""
+    fig, axes = new_figure(1, len(curves), figsize=(8.8, 3.2))
+    for ax, (title, curve) in zip(np.atleast_1d(axes), curves.items(), strict=True):
+        plot_curvature_profile(ax, curve)
+        ax.set_title(title)
+    return fig
