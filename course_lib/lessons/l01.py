@@ -13,6 +13,13 @@ from ..differential_geometry import curvature, signed_curvature, speed, unit_tan
 from ..joint_reparametrization import onto_change_of_variables
 from ..parametrization import ParametricCurve
 from ..plotting import new_figure, plot_curve, plot_frame, plot_vectors, plot_velocity
+from ..plotting.lecture_figures import (
+    deformation_figure,
+    example1_figure,
+    joint_figure,
+    models_figure,
+    reparametrization_figure,
+)
 from ..plotting.reparametrization_figure import plot_reparametrization
 from ..plotting.style import ROLE_COLORS
 from ..reparametrization import ChangeOfVariables, Reparametrized, are_equivalent
@@ -28,7 +35,11 @@ __all__ = [
     "check_number",
     "check_vector",
     "curvature",
+    "deformation_figure",
+    "example1_figure",
     "joint_continuity",
+    "joint_figure",
+    "models_figure",
     "new_figure",
     "onto_change_of_variables",
     "plot_curve",
@@ -38,6 +49,7 @@ __all__ = [
     "plot_velocity",
     "quiz",
     "reparametrization_demo",
+    "reparametrization_figure",
     "signed_curvature",
     "speed",
     "unit_tangent",

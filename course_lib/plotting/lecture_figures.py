@@ -18,17 +18,23 @@ from .constructions import (
 )
 from .curvature import plot_curvature_profile
 from .curves import plot_control_polygon, plot_curve
-from .style import new_figure
+from .style import ROLE_COLORS, new_figure
+from .vectors import plot_frame, plot_vectors, plot_velocity
 
 __all__ = [
     "bezier_figure",
     "catmull_rom_figure",
     "cubic_beta_spline_figure",
     "curvature_profiles_figure",
+    "deformation_figure",
     "degree_raising_figure",
+    "example1_figure",
     "farin_boehm_figure",
     "g1_stitching_figure",
+    "joint_figure",
+    "models_figure",
     "quadratic_beta_spline_figure",
+    "reparametrization_figure",
 ]
 
 
@@ -139,4 +145,83 @@ def curvature_profiles_figure(curves: Mapping[str, object]):
     for ax, (title, curve) in zip(np.atleast_1d(axes), curves.items(), strict=True):
         plot_curvature_profile(ax, curve)
         ax.set_title(title)
+    return fig
+
+
+# ------------------------------------------------------------------------ lecture 01
+def deformation_figure(Q, us):
+    """Lecture 01, ``nb01-007`` (DeRose & Barsky 1985, Fig. 1): the oriented segment [0, 1]
+    with unit tangents at ``us``, and its image, the curve ``Q``, with the same tangents."""
+    domain = _bezier([[0, 0], [1, 0]])
+    fig, (ax_u, ax_q) = new_figure(1, 2, figsize=(8.8, 3.0))
+    plot_curve(ax_u, domain, polygon=False, points=False)
+    plot_frame(ax_u, domain, us, curvature=False, length=0.1)
+    plot_curve(ax_q, Q, polygon=False, points=False)
+    plot_frame(ax_q, Q, us, curvature=False, length=0.4)
+    ax_u.set_title("segment [0, 1], oriented")
+    ax_q.set_title("its image, the curve Q([0, 1])")
+    return fig
+
+
+def joint_figure(qr):
+    """Lecture 01, ``nb01-013`` (Barsky & DeRose 1988, Fig. 1): pieces q and r meeting at J."""
+    fig, ax = new_figure(figsize=(8.6, 3.8))
+    plot_curve(ax, qr, polygon=False, points=False)
+    J = qr.segments[1][0]
+    ax.annotate("J = q(1) = r(0)", xy=J, xytext=(J[0] + 0.15, J[1] + 0.3), fontsize=13)
+    ax.text(0.6, 1.75, "q(u)", fontsize=13)
+    ax.text(5.0, 0.9, "r(t)", fontsize=13)
+    return fig
+
+
+def example1_figure(ex1, dq, dr, typo=None):
+    """Lecture 01, ``nb01-024`` (Fig. 2): Example 1 with the two velocities at J; with
+    ``typo`` (``nb01-033``) also the unit tangent and the printed typo's vector."""
+    J, below = np.asarray(ex1.segments[1][0], dtype=float), np.array([0.12, -0.24])
+    vq, vr = (np.array(d, dtype=float).ravel() for d in (dq, dr))  # sympy -> numpy
+    fig, ax = new_figure(figsize=(8.6, 4.2))
+    plot_curve(ax, ex1, polygon=False, points=False)
+    plot_vectors(
+        ax,
+        J - vq / 2 + below,
+        vq,
+        scale=0.5,
+        color=ROLE_COLORS["segment_even"],
+        label="q'(1) = (2, 1), drawn × ½",
+    )
+    plot_vectors(
+        ax,
+        J + below,
+        vr,
+        scale=0.5,
+        color=ROLE_COLORS["segment_odd"],
+        label="r'(0) = (4, 2), drawn × ½",
+    )
+    ax.set_title("Example 1: the velocity jumps at J, the direction does not")
+    if typo is not None:
+        plot_frame(ax, ex1, 1.0, curvature=False, length=1.0)
+        T_typo = np.array(typo, dtype=float).ravel()
+        plot_vectors(ax, J, T_typo, color=ROLE_COLORS["highlight"], label="typo (4/5, 3/5)")
+    ax.legend(loc="upper left")
+    return fig
+
+
+def reparametrization_figure(Q, f, v0: float):
+    """Lecture 01, ``nb01-039`` (Barsky & DeRose 1988, Fig. 3): ``Q`` and ``Q∘f``."""
+    from .reparametrization_figure import plot_reparametrization
+
+    fig, axes = new_figure(1, 2, figsize=(8.8, 4.2))
+    plot_reparametrization(axes, Q, f, v0)
+    return fig
+
+
+def models_figure(Q, curves, p, titles):
+    """Lecture 01, ``nb01-047`` (DeRose & Barsky 1985, Fig. 2): one panel per curve, the
+    image of ``Q`` in grey and the curve's velocities at the parameters ``p``."""
+    fig, axes = new_figure(1, len(curves), figsize=(8.8, 3.0))
+    for ax, c, title in zip(axes, curves, titles, strict=True):
+        plot_curve(ax, Q, polygon=False, points=False, alternate=False, color="0.6")
+        plot_velocity(ax, c, p, scale=0.1, color=ROLE_COLORS["segment_odd"], width=0.014)
+        ax.set_title(title)
+        ax.label_outer()  # one column of y ticks, at the left
     return fig
