@@ -13,6 +13,7 @@ from ..continuity import curve_continuity
 from ..differential_geometry import arc_length_derivatives
 from ..joint_reparametrization import onto_change_of_variables
 from ..plotting import new_figure, plot_curvature_comb, plot_curvature_profile, plot_curve
+from ..plotting.lecture_figures import combs_figure, names_figure
 from ..reparametrization import ChangeOfVariables
 from ..seed_formulas import inverse_betas
 from ..stitching import g2_stitch
@@ -25,10 +26,12 @@ __all__ = [
     "beta_constraints",
     "check_number",
     "check_vector",
+    "combs_figure",
     "curve_continuity",
     "g2_stitch",
     "g2_stitch_demo",
     "inverse_betas",
+    "names_figure",
     "new_figure",
     "onto_change_of_variables",
     "plot_curvature_comb",

@@ -16,7 +16,7 @@ from .constructions import (
     plot_farin_boehm,
     plot_stitching,
 )
-from .curvature import plot_curvature_profile
+from .curvature import plot_curvature_comb, plot_curvature_profile
 from .curves import plot_control_polygon, plot_curve
 from .style import ROLE_COLORS, new_figure
 from .vectors import plot_frame, plot_vectors, plot_velocity
@@ -24,6 +24,7 @@ from .vectors import plot_frame, plot_vectors, plot_velocity
 __all__ = [
     "bezier_figure",
     "catmull_rom_figure",
+    "combs_figure",
     "cubic_beta_spline_figure",
     "curvature_profiles_figure",
     "deformation_figure",
@@ -33,6 +34,7 @@ __all__ = [
     "g1_stitching_figure",
     "joint_figure",
     "models_figure",
+    "names_figure",
     "quadratic_beta_spline_figure",
     "reparametrization_figure",
 ]
@@ -224,4 +226,31 @@ def models_figure(Q, curves, p, titles):
         plot_velocity(ax, c, p, scale=0.1, color=ROLE_COLORS["segment_odd"], width=0.014)
         ax.set_title(title)
         ax.label_outer()  # one column of y ticks, at the left
+    return fig
+
+
+# ------------------------------------------------------------------------ lecture 02
+def names_figure(qr):
+    """Lecture 02, ``nb02-018b`` (DeRose & Barsky 1985, Fig. 4): the 1985 paper's names,
+    r arriving at J and q leaving it."""
+    fig, ax = new_figure(figsize=(8.6, 3.6))
+    plot_curve(ax, qr, polygon=False, points=False)
+    J = qr.segments[1][0]
+    ax.annotate("J = r(t₁) = q(u₀)", xy=J, xytext=(J[0] + 0.15, J[1] + 0.3), fontsize=13)
+    ax.text(0.3, 1.75, "r(t), t ∈ [t₀, t₁]", fontsize=13)
+    ax.text(3.4, 0.0, "q(u), u ∈ [u₀, u₁]", fontsize=13)
+    ax.set_title("DeRose & Barsky's names: r arrives at J, q leaves it")
+    return fig
+
+
+def combs_figure(curves: Mapping[str, object]):
+    """Lecture 02, ``nb02-044``: per ``name: curve`` a row with the curve and its curvature
+    comb (80 teeth), and its curvature against arc length."""
+    fig, axes = new_figure(len(curves), 2, figsize=(8.8, 3.1 * len(curves)))
+    for row, (name, curve) in zip(np.atleast_2d(axes), curves.items(), strict=True):
+        plot_curve(row[0], curve, polygon=False, points=False)
+        plot_curvature_comb(row[0], curve, samples=80)
+        plot_curvature_profile(row[1], curve)
+        row[0].set_title(f"{name}: comb")
+        row[1].set_title("its κ against arc length s")
     return fig
