@@ -24,6 +24,14 @@ from ..plotting import (
 )
 from ..plotting.closeness_figure import plot_closeness
 from ..plotting.constructions import plot_knot_joint_construction
+from ..plotting.lecture_figures import (
+    closeness_figure,
+    frame_figure,
+    g1_joint_figure,
+    knot_joint_figure,
+    rebuilt_figure,
+    splines_figure,
+)
 from ..reparametrization import ChangeOfVariables, Reparametrized
 from ..seed_formulas import barycentric_weights
 from ..widgets import knot_spline_demo
@@ -36,9 +44,13 @@ __all__ = [
     "barycentric_weights",
     "check_number",
     "closeness",
+    "closeness_figure",
     "curve_continuity",
     "dg",
+    "frame_figure",
+    "g1_joint_figure",
     "g1_knot_spline",
+    "knot_joint_figure",
     "knot_spline_demo",
     "new_figure",
     "pdist",
@@ -49,5 +61,7 @@ __all__ = [
     "plot_knot_joint_construction",
     "plot_osculating_circle",
     "quiz",
+    "rebuilt_figure",
     "rippled_circle",
+    "splines_figure",
 ]

@@ -19,11 +19,12 @@ from .constructions import (
 from .curvature import plot_curvature_comb, plot_curvature_profile
 from .curves import plot_control_polygon, plot_curve
 from .style import ROLE_COLORS, new_figure
-from .vectors import plot_frame, plot_vectors, plot_velocity
+from .vectors import plot_frame, plot_osculating_circle, plot_vectors, plot_velocity
 
 __all__ = [
     "bezier_figure",
     "catmull_rom_figure",
+    "closeness_figure",
     "combs_figure",
     "cubic_beta_spline_figure",
     "curvature_profiles_figure",
@@ -31,12 +32,17 @@ __all__ = [
     "degree_raising_figure",
     "example1_figure",
     "farin_boehm_figure",
+    "frame_figure",
+    "g1_joint_figure",
     "g1_stitching_figure",
     "joint_figure",
+    "knot_joint_figure",
     "models_figure",
     "names_figure",
     "quadratic_beta_spline_figure",
+    "rebuilt_figure",
     "reparametrization_figure",
+    "splines_figure",
 ]
 
 
@@ -253,4 +259,119 @@ def combs_figure(curves: Mapping[str, object]):
         plot_curvature_profile(row[1], curve)
         row[0].set_title(f"{name}: comb")
         row[1].set_title("its κ against arc length s")
+    return fig
+
+
+# ------------------------------------------------------------------------ lecture 03
+def frame_figure(curve, t_left: float = 0.2, t_right: float = 0.8):
+    """Lecture 03, ``nb03-018`` (Finn, Figs. 1 and 2): left, the frame T, N, dT/ds and the
+    osculating circle at ``t_left``; right, the frame at both parameters."""
+    fig, (a1, a2) = new_figure(1, 2, figsize=(8.8, 3.8))
+    for ax in (a1, a2):
+        plot_curve(ax, curve, polygon=False, points=False, joints=False)
+    plot_osculating_circle(a1, curve, t_left)
+    plot_frame(a1, curve, t_left, normal=True)
+    plot_frame(a2, curve, [t_left, t_right], normal=True, labels=False)
+    a1.legend(loc="lower right", fontsize=9)
+    a1.set_title(f"T, N, dT/ds = κN and\nthe osculating circle (t = {t_left:g})")
+    a2.set_title(f"κ({t_left:g}) > 0 (turns left),\nκ({t_right:g}) < 0 (turns right)")
+    return fig
+
+
+def rebuilt_figure(curve, rebuilt, moved):
+    """Lecture 03, ``nb03-029``: a curve, its samples rebuilt from κ(s), and the same κ(s)
+    started elsewhere in another direction."""
+    fig, ax = new_figure(figsize=(7, 4.5))
+    plot_curve(ax, curve, polygon=False, points=False, joints=False, label="original")
+    ax.plot(*rebuilt.points.T, "o", ms=4, label="rebuilt from κ(s)")
+    ax.plot(*moved.points.T, "s", ms=4, label="same κ(s), other start")
+    ax.legend(loc="lower left")
+    ax.set_title("one curvature function, one shape")
+    return fig
+
+
+def closeness_figure(circle, others, t):
+    """Lecture 03, ``nb03-038`` (Finn, Fig. 3): top, each curve of ``others`` (a list of
+    ``(curve or samples, label, title)``) over the circle (grey); bottom, their signed
+    curvature against arc length over the circle's κ = 1.  A curve given as samples of
+    :func:`~course_lib.differential_geometry.curve_from_curvature` (``s``, ``points``,
+    ``angle``) has its curvature read off the tangent angle, κ = dθ/ds."""
+    from ..differential_geometry import signed_curvature
+
+    ref = circle.evaluate(t)
+    fig, axes = new_figure(2, len(others), figsize=(8.8, 5.6))
+    for (top, bottom), (curve, label, title) in zip(axes.T, others, strict=True):
+        top.plot(*ref.T, color="0.6", lw=3)
+        if hasattr(curve, "angle"):
+            pts, s, kappa = curve.points, curve.s, np.gradient(curve.angle, curve.s)
+        else:
+            pts = curve.evaluate(t)
+            steps = np.linalg.norm(np.diff(pts, axis=0), axis=1)
+            s, kappa = np.concatenate([[0.0], np.cumsum(steps)]), signed_curvature(curve, t)
+        top.plot(*pts.T, lw=1.2)
+        top.set_aspect("equal")
+        top.locator_params(axis="x", nbins=4)
+        top.set_title(f"{title}\n{label}", fontsize=10)
+        bottom.axhline(1.0, color="0.6", lw=3)
+        bottom.plot(s, kappa, lw=1.2 if np.ptp(kappa) < 5 else 0.5)
+        bottom.set_ylim(-0.2, 2.2)
+        if np.ptp(kappa) > 5:  # far off the scale: say how far
+            bottom.text(
+                0.5,
+                0.95,
+                f"κ from {kappa.min():.0f} to {kappa.max():.0f}",
+                transform=bottom.transAxes,
+                ha="center",
+                va="top",
+                fontsize=10,
+                bbox={"facecolor": "white", "edgecolor": "0.7"},
+            )
+        bottom.set_xlabel("arc length s")
+    axes[1, 0].set_ylabel("signed curvature κ")
+    for ax in axes[1, 1:]:
+        ax.tick_params(labelleft=False)
+    return fig
+
+
+def g1_joint_figure(curve, p):
+    """Lecture 03, ``nb03-040`` (Finn, Fig. 4): two cubics joined G1 and their points p_i."""
+    fig, ax = new_figure(figsize=(8, 3.8))
+    plot_curve(ax, curve)
+    plot_control_polygon(ax, p, labels="$p_{i}$", linestyle="none")
+    ax.set_title("G1 joint: p₃ on the segment p₂p₄, not at its midpoint")
+    return fig
+
+
+def splines_figure(splines: Mapping[str, object], *, control_points=False, reference=None):
+    """Lecture 03, ``nb03-048``, ``nb03-050``, ``nb03-061``: one panel per ``title: spline``;
+    with ``control_points`` the Bézier points and joints too; a ``reference`` spline is drawn
+    under each panel in grey, so that the joints' shifts stand out."""
+    fig, axs = new_figure(1, len(splines), figsize=(8.8, 2.9 if len(splines) < 3 else 2.7))
+    for ax, (title, c) in zip(np.atleast_1d(axs), splines.items(), strict=True):
+        if reference is not None and reference is not c:
+            plot_curve(
+                ax,
+                reference,
+                polygon=False,
+                points=False,
+                joints=False,
+                alternate=False,
+                color="0.7",
+            )
+        if control_points or reference is not None:
+            plot_curve(ax, c)
+        else:
+            plot_curve(ax, c, polygon=False, points=False, joints=False)
+        ax.set_title(title)
+        ax.label_outer()
+    return fig
+
+
+def knot_joint_figure(spline, joint: int, title: str):
+    """Lecture 03, ``nb03-057`` (Finn, Fig. 7): a copy of the knot interval beside a leg."""
+    from .constructions import plot_knot_joint_construction
+
+    fig, ax = new_figure(figsize=(8.6, 4))
+    plot_knot_joint_construction(ax, spline, joints=[joint], offset=-0.12)
+    ax.set_title(title)
     return fig
