@@ -30,6 +30,7 @@ __all__ = [
     "curvature_profiles_figure",
     "deformation_figure",
     "degree_raising_figure",
+    "domain_and_patch_figure",
     "example1_figure",
     "farin_boehm_figure",
     "frame_figure",
@@ -39,7 +40,10 @@ __all__ = [
     "knot_joint_figure",
     "models_figure",
     "names_figure",
+    "parameter_lines_figure",
+    "patch_pairs_figure",
     "quadratic_beta_spline_figure",
+    "quartic_conventions_figure",
     "rebuilt_figure",
     "reparametrization_figure",
     "splines_figure",
@@ -374,4 +378,62 @@ def knot_joint_figure(spline, joint: int, title: str):
     fig, ax = new_figure(figsize=(8.6, 4))
     plot_knot_joint_construction(ax, spline, joints=[joint], offset=-0.12)
     ax.set_title(title)
+    return fig
+
+
+# ------------------------------------------------------------------------ lecture 05
+def quartic_conventions_figure(P, rows: Mapping[float, tuple]):
+    """Lecture 05, ``nb05-021`` (DeRose & Barsky 1985, Fig. 5): per ``β2: (course, 1985)``
+    a row of two quartic Beta-splines on the polygon ``P``, the course's reading left and the
+    1985 paper's right.  Every panel has the same limits (the polygon's, with a margin), so
+    the polygons compare point by point; a curve that leaves the frame is clipped."""
+    P = np.asarray(P, dtype=float)
+    lo, hi = P.min(axis=0), P.max(axis=0)
+    pad = 0.12 * (hi - lo)
+    fig, axs = new_figure(len(rows), 2, figsize=(8.8, 1.7 * len(rows) + 0.4))
+    for row, (beta2, curves) in zip(np.atleast_2d(axs), rows.items(), strict=True):
+        for ax, curve in zip(row, curves, strict=True):
+            plot_control_polygon(ax, P)
+            plot_curve(ax, curve, polygon=False, points=False)
+            ax.set_aspect("equal", adjustable="box")
+            ax.set(xlim=(lo[0] - pad[0], hi[0] + pad[0]), ylim=(lo[1] - pad[1], hi[1] + pad[1]))
+            ax.label_outer()
+        row[0].set_title(f"course: β = (1, {beta2:g}, 0)", fontsize=10)
+        row[1].set_title(f"the 1985 reading: β = (1, {-beta2:g}, {3 * beta2**2:g})", fontsize=10)
+    return fig
+
+
+def domain_and_patch_figure(F):
+    """Lecture 05, ``nb05-026`` (DeRose & Barsky 1985, Fig. 6): the domain and the patch."""
+    from .surface_figures import plot_domain_and_patch
+
+    fig, ax = new_figure(figsize=(7, 5.5), projection="3d")
+    plot_domain_and_patch(ax, F)
+    ax.set_title("the oriented domain D (grey) and its image, the patch")
+    return fig
+
+
+def parameter_lines_figure(F, to_uv):
+    """Lecture 05, ``nb05-033`` (Fig. 8): parameter lines of ``F`` and of ``F∘to_uv``."""
+    from .surface_figures import plot_parameter_lines
+
+    fig, (a1, a2) = new_figure(1, 2, figsize=(8.8, 4.2), projection="3d")
+    plot_parameter_lines(a1, F)
+    plot_parameter_lines(a2, F, to_uv)
+    a1.set_title("parameter lines of G")
+    a2.set_title("the same surface: parameter lines of G̃")
+    return fig
+
+
+def patch_pairs_figure(F, pairs: Mapping[str, object]):
+    """Lecture 05, ``nb05-047`` (Fig. 7): per ``title: G`` the pair F, G with the normals of
+    both along their common boundary, seen from one low angle."""
+    from .surfaces3d import plot_patch_pair
+
+    fig, axes = new_figure(1, len(pairs), figsize=(8.2, 4.1), projection="3d")
+    for ax, (title, G) in zip(np.atleast_1d(axes), pairs.items(), strict=True):
+        plot_patch_pair(ax, F, G, net=False, length=1.0, zoom=1.3)
+        ax.view_init(elev=12, azim=-15)
+        ax.set_title(title)
+    np.atleast_1d(axes)[-1].legend(loc="upper left", fontsize=9)
     return fig
