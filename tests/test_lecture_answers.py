@@ -189,11 +189,11 @@ def _g2_joints_of_eight_by_continuity_report():
     return g2
 
 
-def _corners_of_g_by_tangent_angles():
+def _corners_of_ampersand_by_tangent_angles():
     from course_lib.outlines import glyph_outline
 
     corners = 0
-    for contour in glyph_outline("g").contours:  # closed: the closing joint counts too
+    for contour in glyph_outline("&").contours:  # closed: the closing joint counts too
         segs = contour.curve.segments
         for a, b in zip(segs, segs[1:] + segs[:1], strict=True):
             t_in, t_out = a[-1] - a[-2], b[1] - b[0]  # end legs: the tangent directions
@@ -211,7 +211,7 @@ NUMBERS = {  # qid: (right answer, typical wrong answers)
     "lecture04.q3": (4.0, [5.0]),  # W1 = V3 + 0.5 (V3 - V2) = (3, 2) + 0.5 (2, 0)
     "lecture05.q2": (10, [4, 6]),  # n (n + 3) for n = 2
     "lecture05.q3": (-0.125, [0.125, -0.5]),  # -β2 / β1³ = -1 / 8
-    "lecture06.q2": (_corners_of_g_by_tangent_angles, [0, 5, 7]),
+    "lecture06.q2": (_corners_of_ampersand_by_tangent_angles, [0, 11, 13, 6]),
     "lecture06.q4": (_curvature_jump_by_hand, [0.625, 0.08, -1.25]),  # no 2, numerator, sign
     "lecture06.q5": (_g2_joints_of_eight_by_continuity_report, [30, 26, 3]),
 }

@@ -137,10 +137,10 @@ def _g2_points_of_eight() -> float:  # lecture 6, Q5: G2 joints of DejaVu Sans' 
     return float(glyph_summary(glyph_outline("8")).g2)
 
 
-def _corners_of_g() -> float:  # lecture 6, Q2: corners of DejaVu Sans' "g", default tolerance
+def _corners_of_ampersand() -> float:  # lecture 6, Q2: corners of DejaVu Sans' "&"
     from ..outlines import glyph_outline, glyph_summary
 
-    return float(glyph_summary(glyph_outline("g")).corners)
+    return float(glyph_summary(glyph_outline("&")).corners)
 
 
 # ------------------------------------------------------------- multiple choice (practice)
@@ -255,7 +255,7 @@ _NUMBERS: dict[str, Callable[[], float]] = {
     "lecture04.q3": _w1_x_for_beta1_half,
     "lecture05.q2": _shape_functions_g2,
     "lecture05.q3": _beta2_in_course_convention,
-    "lecture06.q2": _corners_of_g,
+    "lecture06.q2": _corners_of_ampersand,
     "lecture06.q4": _curvature_jump_at_implied_point,
     "lecture06.q5": _g2_points_of_eight,
 }

@@ -19,6 +19,7 @@ from ..outlines import (
     svg_outline,
 )
 from ..plotting import new_figure, plot_outline
+from ..plotting.lecture_figures import glyph_points_figure, glyphs_figure, outlines_figure
 from ..widgets import glyph_demo
 
 __all__ = [
@@ -31,9 +32,12 @@ __all__ = [
     "font_summary",
     "glyph_demo",
     "glyph_outline",
+    "glyph_points_figure",
     "glyph_summary",
+    "glyphs_figure",
     "joint_continuity",
     "new_figure",
+    "outlines_figure",
     "plot_outline",
     "quadratic_beta_spline",
     "quiz",

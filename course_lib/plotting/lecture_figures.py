@@ -36,10 +36,13 @@ __all__ = [
     "frame_figure",
     "g1_joint_figure",
     "g1_stitching_figure",
+    "glyph_points_figure",
+    "glyphs_figure",
     "joint_figure",
     "knot_joint_figure",
     "models_figure",
     "names_figure",
+    "outlines_figure",
     "parameter_lines_figure",
     "patch_pairs_figure",
     "quadratic_beta_spline_figure",
@@ -436,4 +439,67 @@ def patch_pairs_figure(F, pairs: Mapping[str, object]):
         ax.view_init(elev=12, azim=-15)
         ax.set_title(title)
     np.atleast_1d(axes)[-1].legend(loc="upper left", fontsize=9)
+    return fig
+
+
+# ------------------------------------------------------------------------ lecture 06
+def glyph_points_figure(outline, implied):
+    """Lecture 06, ``nb06-007``: a glyph's points and segments, its ``implied`` on-curve
+    points marked."""
+    from .outlines import plot_outline
+
+    fig, ax = new_figure(figsize=(5.2, 5.2))
+    plot_outline(ax, outline, comb=False, polygon=True, marks=(), legend=False)
+    ax.plot(*np.asarray(implied).T, "o", ms=7, color="#009E73", label="implied on-curve points")
+    ax.legend(loc="lower right")
+    ax.set_title(f"DejaVu Sans {outline.name!r}: points and segments")
+    return fig
+
+
+def _kind_legend(fig, kinds):
+    """One legend for the joint kinds of all panels, without per-panel counts."""
+    from matplotlib.lines import Line2D
+
+    from .outlines import MARK_STYLES
+
+    handles = [
+        Line2D(
+            [],
+            [],
+            ls="none",
+            marker=MARK_STYLES[k]["marker"],
+            ms=7,
+            mfc=MARK_STYLES[k]["color"],
+            mec="black",
+            mew=0.6,
+            label=MARK_STYLES[k]["label"],
+        )
+        for k in kinds
+    ]
+    fig.legend(handles=handles, title="joints", ncol=len(handles), loc="outside lower center")
+
+
+def glyphs_figure(glyphs: Mapping[str, object]):
+    """Lecture 06, ``nb06-014``: each glyph with its curvature comb and joints, two per row."""
+    from .outlines import plot_outline
+
+    rows = (len(glyphs) + 1) // 2
+    fig, axes = new_figure(rows, 2, figsize=(8.8, 3.9 * rows))
+    kinds = set()
+    for ax, (c, outline) in zip(np.ravel(axes), glyphs.items(), strict=False):
+        art = plot_outline(ax, outline, legend=False)
+        kinds |= set(np.unique(art.table.kind))
+        ax.set_title(f"'{c}'")
+    _kind_legend(fig, [k for k in ("corner", "G1", "G2", "singular", "gap") if k in kinds])
+    return fig
+
+
+def outlines_figure(outlines, **style):
+    """Lecture 06, ``nb06-022``: outlines side by side with combs, titled by their names."""
+    from .outlines import plot_outline
+
+    fig, axes = new_figure(1, len(outlines), figsize=(8.8, 4.2))
+    for ax, outline in zip(np.atleast_1d(axes), outlines, strict=True):
+        plot_outline(ax, outline, legend=False, **style)
+        ax.set_title(outline.name)
     return fig
