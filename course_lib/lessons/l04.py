@@ -24,6 +24,7 @@ from ..plotting.lecture_figures import (
     quadratic_beta_spline_figure,
 )
 from ..seed_formulas import (
+    blending_basis,
     blending_system,
     cubic_beta_spline_printed,
     cubic_beta_spline_reciprocal,
@@ -37,6 +38,7 @@ __all__ = [
     "beta_spline_demo",
     "bezier",
     "bezier_figure",
+    "blending_basis",
     "blending_system",
     "catmull_rom",
     "catmull_rom_demo",
