@@ -1,8 +1,10 @@
 """The lectures' answers, derived here independently, are the ones their checks accept.
 
-A lecture stores only ``answer_hash(right, salt=qid)``; this test computes each right answer
-from first principles (or the course's definitions) and checks the hash, so a wrong hash in a
-lecture fails here instead of misleading students.  The code exercises (``check_number``,
+Multiple choice in a lecture is practice (CONTRIBUTING.md, "Lecture notebooks"): the notebook
+stores no answer and no hash of one, and :func:`course_lib.checks.lectures.quiz` checks the
+letters.  This test works each right answer out from first principles (or the course's
+definitions), checks that ``quiz`` accepts exactly it among all letter sets, and that no
+lecture cell carries a hash-like string.  The code exercises (``check_number``,
 ``check_vector``) are answered by hand or by a route other than the one
 ``course_lib.checks.lectures`` takes; each must accept that answer, reject typical wrong ones
 and call a blank answer "not answered yet".
@@ -10,6 +12,7 @@ and call a blank answer "not answered yet".
 
 from __future__ import annotations
 
+import itertools
 import json
 import re
 from pathlib import Path
@@ -19,19 +22,19 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from course_lib.checks import answer_hash
-
 ROOT = Path(__file__).resolve().parents[1]
-QUIZ = re.compile(r'quiz\("(lecture\d\d\.q\d)".*?"([0-9a-f]{16})"\)', re.S)
+LECTURES = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
+QUIZ = re.compile(r'\bquiz\(\s*"(lecture\d\d\.q\d)"')
+HASHLIKE = re.compile(r'"[0-9a-f]{16}"')
 
 
-def stored_hashes() -> dict:
-    out = {}
-    for path in (ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"):
-        for cell in json.loads(path.read_text())["cells"]:
-            for qid, h in QUIZ.findall("".join(cell["source"])):
-                out[qid] = h
-    return out
+def _code(path: Path) -> list[str]:
+    return ["".join(c["source"]) for c in json.loads(path.read_text())["cells"]
+            if c["cell_type"] == "code"]
+
+
+def quiz_questions() -> set:
+    return {qid for path in LECTURES for src in _code(path) for qid in QUIZ.findall(src)}
 
 
 def _quartic_c1_not_c2():
@@ -45,7 +48,7 @@ def _quartic_c1_not_c2():
 
 
 def _knot_ratio():
-    t0, t1, t2 = 0.0, 1.0, 3.0  # |p2 p3| : |p3 p4| = (t1 - t0) : (t2 - t1)  (seed 004 §19.6)
+    t0, t1, t2 = 0.0, 1.0, 3.0  # |p2 p3| : |p3 p4| = (t1 - t0) : (t2 - t1)  (Finn §19.6)
     assert (t1 - t0) / (t2 - t1) == 1 / 2
     return "b"  # 1 : 2
 
@@ -62,29 +65,64 @@ def _g2_not_c1():
     return "c"
 
 
-ANSWERS = {
-    "lecture01.q1": lambda: "b, d",  # unit tangent and curvature are intrinsic
-    "lecture01.q2": lambda: "b",  # Example 1: G1 but not C1
-    "lecture02.q1": lambda: "b",  # three shape parameters, only β1 > 0
-    "lecture02.q2": _g2_not_c1,
-    "lecture03.q1": _knot_ratio,
-    "lecture03.q3": lambda: "c",  # κ = 0: radius 1/|κ| = ∞, a straight line
-    "lecture04.q1": _w1_for_beta1_3,
-    "lecture05.q1": _quartic_c1_not_c2,
+def _implied_point_c1():
+    A, B = np.array([0.2, 0.4]), np.array([0.6, 0.4])
+    M = (A + B) / 2  # q'(1) = 2 (M - A), r'(0) = 2 (B - M): equal vectors, C1 with β1 = 1
+    assert np.allclose(2 * (M - A), 2 * (B - M))
+    return "a"
+
+
+ANSWERS = {  # qid: (option letters, right answer)
+    "lecture01.q1": ("abcd", lambda: "b, d"),  # unit tangent and curvature are intrinsic
+    "lecture01.q2": ("abc", lambda: "b"),  # Example 1: G1 but not C1
+    "lecture02.q1": ("abcd", lambda: "b"),  # three shape parameters, only β1 > 0
+    "lecture02.q2": ("abcd", _g2_not_c1),
+    "lecture03.q1": ("abcd", _knot_ratio),
+    "lecture03.q3": ("abcd", lambda: "c"),  # κ = 0: radius 1/|κ| = ∞, a straight line
+    "lecture04.q1": ("abcd", _w1_for_beta1_3),
+    "lecture05.q1": ("abcd", _quartic_c1_not_c2),
+    "lecture06.q1": ("abcd", _implied_point_c1),
+    "lecture06.q3": ("abcd", lambda: "b"),  # all joints G2; the outline moved (nb06, §4)
 }
 
 
+def _letter_sets(letters: str):
+    for k in range(1, len(letters) + 1):
+        yield from (", ".join(c) for c in itertools.combinations(letters, k))
+
+
 @pytest.mark.parametrize("qid", sorted(ANSWERS))
-def test_stored_hash_is_the_right_answer(qid):
-    hashes = stored_hashes()
-    assert qid in hashes, f"{qid} not found in the lectures"
-    assert answer_hash(ANSWERS[qid](), salt=qid) == hashes[qid]
+def test_quiz_accepts_exactly_the_right_letters(qid):
+    from course_lib.checks.lectures import quiz
+
+    letters, right = ANSWERS[qid]
+    right = ", ".join(sorted(right().replace(",", " ").split()))
+    for option in _letter_sets(letters):
+        verdict = quiz(qid, option)
+        assert verdict.passed == (option == right), (qid, option)
+        assert verdict.answered
+    assert quiz(qid, right.upper()).passed  # case does not matter
+    blank = quiz(qid, ...)
+    assert blank.status == "not answered"
 
 
-def test_every_quiz_of_lectures_01_to_05_is_covered():
+def test_every_quiz_of_the_lectures_is_covered():
     # a later lecture adds its questions to ANSWERS (CONTRIBUTING.md, "Lecture notebooks")
-    early = {q for q in stored_hashes() if int(q[7:9]) <= 5}
-    assert early == set(ANSWERS)
+    assert quiz_questions() == set(ANSWERS)
+
+
+@pytest.mark.parametrize("path", LECTURES, ids=[p.stem for p in LECTURES])
+def test_no_lecture_stores_an_answer_hash(path):
+    found = [src for src in _code(path) if HASHLIKE.search(src) or "answer_hash" in src]
+    assert not found, f"{path.name}: a hash of an answer in {found}"
+
+
+def test_the_question_table_hands_out_no_answers():
+    from course_lib.checks.lectures import LECTURE_QUESTIONS
+
+    assert set(LECTURE_QUESTIONS.values()) <= {"number", "vector", "choice"}
+    assert not any(callable(v) for v in LECTURE_QUESTIONS.values())
+    assert set(ANSWERS) | set(NUMBERS) | set(VECTORS) == set(LECTURE_QUESTIONS)
 
 
 # ------------------------------------------------ code exercises: check_number, check_vector
@@ -94,12 +132,8 @@ CHECKED = re.compile(r'\b(check_number|check_vector)\("(lecture\d\d\.q\d)"')
 
 
 def checked_questions() -> dict:
-    out = {}
-    for path in (ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"):
-        for cell in json.loads(path.read_text())["cells"]:
-            for kind, qid in CHECKED.findall("".join(cell["source"])):
-                out[qid] = kind
-    return out
+    return {qid: kind for path in LECTURES for src in _code(path)
+            for kind, qid in CHECKED.findall(src)}
 
 
 def _unit_tangent_of_q_after_f():
@@ -123,7 +157,7 @@ def _third_derivative_by_composition():
     q = d1 * (x - 1) + d2 * (x - 1) ** 2 / 2 + d3 * (x - 1) ** 3 / 6  # q', q'', q''' at 1
     u = 1 + 2 * (ub - 1) + (ub - 1) ** 2 / 2 + 3 * (ub - 1) ** 3 / 6  # β = (2, 1, 3)
     exact = q.subs(x, u).diff(ub, 3).subs(ub, 1)
-    # by hand (seed 000 eq. 7.3): β1³ q''' + 3 β1 β2 q'' + β3 q' = 8(1,1) + 6(0,1) + 3(1,0)
+    # by hand (Barsky & DeRose 1988, eq. 7.3): β1³ q''' + 3 β1 β2 q'' + β3 q' = 8(1,1) + 6(0,1) + 3(1,0)
     assert exact == sp.Matrix([11, 14])
     return np.array(exact, dtype=float).ravel()
 
@@ -155,6 +189,19 @@ def _g2_joints_of_eight_by_continuity_report():
     return g2
 
 
+def _corners_of_ampersand_by_tangent_angles():
+    from course_lib.outlines import glyph_outline
+
+    corners = 0
+    for contour in glyph_outline("&").contours:  # closed: the closing joint counts too
+        segs = contour.curve.segments
+        for a, b in zip(segs, segs[1:] + segs[:1], strict=True):
+            t_in, t_out = a[-1] - a[-2], b[1] - b[0]  # end legs: the tangent directions
+            cos = t_in @ t_out / (np.linalg.norm(t_in) * np.linalg.norm(t_out))
+            corners += np.degrees(np.arccos(np.clip(cos, -1, 1))) > 2  # default tolerance
+    return corners
+
+
 NUMBERS = {  # qid: (right answer, typical wrong answers)
     "lecture01.q3": (np.hypot(4, 2), [np.hypot(2, 1)]),  # q~'(v) = 2 q'(2v) = (4, 2)
     "lecture02.q3": (3.0, [0.0, 2.0]),  # (3, 4) = 2² (0, 1) + β2 (1, 0)
@@ -164,13 +211,14 @@ NUMBERS = {  # qid: (right answer, typical wrong answers)
     "lecture04.q3": (4.0, [5.0]),  # W1 = V3 + 0.5 (V3 - V2) = (3, 2) + 0.5 (2, 0)
     "lecture05.q2": (10, [4, 6]),  # n (n + 3) for n = 2
     "lecture05.q3": (-0.125, [0.125, -0.5]),  # -β2 / β1³ = -1 / 8
+    "lecture06.q2": (_corners_of_ampersand_by_tangent_angles, [0, 11, 13, 6]),
     "lecture06.q4": (_curvature_jump_by_hand, [0.625, 0.08, -1.25]),  # no 2, numerator, sign
     "lecture06.q5": (_g2_joints_of_eight_by_continuity_report, [30, 26, 3]),
 }
 VECTORS = {
     # wrong: the velocity of Q∘f (not normalized); T of Q at u = v instead of u = f(v)
     "lecture01.q4": (_unit_tangent_of_q_after_f, [[3, 3], [0.6, 0.8]]),
-    # wrong: without the 3 of 3 β1 β2 q''; with seed 001's misprint β2 q' for β3 q'
+    # wrong: without the 3 of 3 β1 β2 q''; with DeRose & Barsky's misprint β2 q' for β3 q'
     "lecture02.q4": (_third_derivative_by_composition, [[11, 10], [9, 14]]),
 }
 

@@ -1,25 +1,34 @@
-"""Numeric and vector "check your understanding" questions of the lecture notebooks.
+"""The "check your understanding" questions of the lecture notebooks: practice, not graded.
 
 A lecture must never contain the answer to its own question, not even as an expression
 such as ``expected=(3 - 1) / (1 - 0)``.  The expected values are computed here, at check
 time, from the question's data with ``course_lib`` -- never printed::
 
-    from course_lib.checks.lectures import check_number, check_vector
+    from course_lib.checks.lectures import check_number, check_vector, quiz
     check_number("lecture03.q2", my_beta1)
     check_vector("lecture01.q4", my_tangent)      # a plane vector [x, y]
+    quiz("lecture04.q1", my_answer)              # multiple choice: letters
 
-Multiple-choice questions use :func:`course_lib.checks.quiz` with a salted hash instead.
+Multiple-choice questions in a lecture are practice: the course grades homework only, and a
+multiple-choice answer can always be found by trying the few letter sets there are.  So the
+lectures store no hash that would pretend to hide it; :func:`quiz` checks the letters against
+this module (computed from the question's data where that is cheap).  A student who reads
+this module reads the answers -- the checks are feedback, not a lock.
+
+:data:`LECTURE_QUESTIONS` lists the questions and their kind (``"number"``, ``"vector"``,
+``"choice"``); it holds no answers and nothing in it can be called to get one.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
 
 import numpy as np
 
-from ._core import Verdict, as_number, as_vector, run_validate
+from ._core import Verdict, as_choice, as_number, as_vector, run_validate
 
-__all__ = ["LECTURE_QUESTIONS", "LECTURE_VECTORS", "check_number", "check_vector"]
+__all__ = ["LECTURE_QUESTIONS", "check_number", "check_vector", "quiz"]
 
 
 def _speed_after_reparametrization() -> float:  # lecture 1, Q3: speed of q(2v) at the joint
@@ -128,8 +137,116 @@ def _g2_points_of_eight() -> float:  # lecture 6, Q5: G2 joints of DejaVu Sans' 
     return float(glyph_summary(glyph_outline("8")).g2)
 
 
+def _corners_of_ampersand() -> float:  # lecture 6, Q2: corners of DejaVu Sans' "&"
+    from ..outlines import glyph_outline, glyph_summary
+
+    return float(glyph_summary(glyph_outline("&")).corners)
+
+
+# ------------------------------------------------------------- multiple choice (practice)
+def _w1_choice() -> str:  # lecture 4, Q1: W1 for β1 = 3, tried on a concrete cubic
+    from ..stitching import g1_stitch
+
+    V = np.array([[0.0, 0.0], [1.0, 1.0], [1.0, 2.0], [3.0, 2.0]])
+    W1 = g1_stitch(V, beta1=3.0, W_rest=[[9.0, 0.0], [10.0, 0.0]]).segments[1][1]
+    options = {"a": V[3] + 3 * (V[3] - V[2]), "b": V[3] + (V[3] - V[2]) / 3, "c": 3 * V[3] - V[2]}
+    return next(k for k, p in options.items() if np.allclose(p, W1))
+
+
+def _knot_ratio_choice() -> str:  # lecture 3, Q1: |p2 p3| : |p3 p4| for knots 0, 1, 3
+    from ..knot_splines import knot_ratio_beta1
+
+    beta1 = float(knot_ratio_beta1(np.array([0.0, 1.0, 3.0]))[0])  # |p3 p4| / |p2 p3|
+    return {1.0: "a", 2.0: "b", 0.5: "c", 3.0: "d"}[beta1]
+
+
+def _quartic_order_choice() -> str:  # lecture 5, Q1: β = (1, 100, 0) -- C1 but not C2
+    from ..continuity import curve_continuity
+    from ..higher_order import quartic_beta_spline
+
+    P = np.array([[0, 0], [1, 2.4], [3, 3], [4, 0.6], [6, 0.2], [7, 2.6], [9, 3], [10, 0.4]])
+    reports = curve_continuity(quartic_beta_spline(P, 1.0, 100.0, 0.0), max_order=3)
+    c, g = min(r.c_order for r in reports), min(r.g_order for r in reports)
+    if c >= 3:
+        return "a"
+    if c >= 1:
+        return "b"
+    return "c" if g >= 3 else "d"
+
+
+@dataclass(frozen=True)
+class _Choice:
+    """A practice multiple-choice question: its prompt, its options (a, b, c, ...) and a
+    function returning the right letters."""
+
+    prompt: str
+    options: tuple[str, ...]
+    right: Callable[[], str]
+
+    @property
+    def letters(self) -> str:
+        return "abcdefgh"[: len(self.options)]
+
+
+_CHOICES: dict[str, _Choice] = {
+    "lecture01.q1": _Choice(
+        "Which are intrinsic (equal for equivalent parametrizations)?",
+        ("the velocity vector", "the unit tangent", "the speed", "the curvature"),
+        lambda: "b, d",  # unit tangent and curvature
+    ),
+    "lecture01.q2": _Choice(
+        "q(u) = (2u, u) on [0, 1] and r(t) = (4t + 2, 2t + 1) on [0, 1/2] meet with",
+        ("C1 continuity", "G1 but not C1 continuity", "neither C1 nor G1 continuity"),
+        lambda: "b",  # Example 1 of Barsky & DeRose 1988
+    ),
+    "lecture02.q1": _Choice(
+        "At a G3 joint: how many shape parameters, which positive?",
+        ("2; both", "3; only β1", "3; all three", "4; only β1"),
+        lambda: "b",
+    ),
+    "lecture02.q2": _Choice(
+        "r'(0) = 2 q'(1), r''(0) = 4 q''(1) + 5 q'(1): the joint is",
+        ("C2", "G1 but not G2", "G2 but not C1", "not even G1"),
+        lambda: "c",  # β1 = 2, β2 = 5
+    ),
+    "lecture03.q1": _Choice(
+        "Ratio |p2p3| : |p3p4| for knots 0, 1, 3?",
+        ("1 : 1", "1 : 2", "2 : 1", "1 : 3"),
+        _knot_ratio_choice,
+    ),
+    "lecture03.q3": _Choice(
+        "The osculating circle at an inflection is",
+        ("a point", "a circle of radius 0", "a straight line (radius ∞)", "undefined because T is"),
+        lambda: "c",  # κ = 0: radius 1/|κ| = ∞
+    ),
+    "lecture04.q1": _Choice(
+        "W1 for β1 = 3?",
+        ("V3 + 3 (V3 - V2)", "V3 + (V3 - V2)/3", "3 V3 - V2", "anywhere on the line V2V3"),
+        _w1_choice,
+    ),
+    "lecture05.q1": _Choice(
+        "β1 = 1, β2 = 100, β3 = 0 gives",
+        ("C3", "C1 but not C2", "G3 but not even C1", "neither C1 nor G3"),
+        _quartic_order_choice,
+    ),
+    "lecture06.q1": _Choice(
+        "At an implied on-curve point the two segments are",
+        ("C1 with β1 = 1", "G1 but never C1", "always G2",
+         "G2 exactly when the chord P0 P2 is perpendicular to AB"),
+        lambda: "a",  # velocity B - A on both sides
+    ),
+    "lecture06.q3": _Choice(
+        "After the change",
+        ("the font's on-curve points still lie on the outline",
+         "every joint is G2, but the outline moved by about 0.01 em",
+         "the comb still steps at the four extremes", "the contour is only C1"),
+        lambda: "b",
+    ),
+}
+
+
 #: question id -> function computing the expected value from the question's data
-LECTURE_QUESTIONS: dict[str, Callable[[], float]] = {
+_NUMBERS: dict[str, Callable[[], float]] = {
     "lecture01.q3": _speed_after_reparametrization,
     "lecture02.q3": _beta2_of_a_joint,
     "lecture03.q2": _beta1_for_knots,
@@ -138,36 +255,45 @@ LECTURE_QUESTIONS: dict[str, Callable[[], float]] = {
     "lecture04.q3": _w1_x_for_beta1_half,
     "lecture05.q2": _shape_functions_g2,
     "lecture05.q3": _beta2_in_course_convention,
+    "lecture06.q2": _corners_of_ampersand,
     "lecture06.q4": _curvature_jump_at_implied_point,
     "lecture06.q5": _g2_points_of_eight,
 }
 
 #: question id -> function computing the expected plane vector from the question's data
-LECTURE_VECTORS: dict[str, Callable[[], np.ndarray]] = {
+_VECTORS: dict[str, Callable[[], np.ndarray]] = {
     "lecture01.q4": _unit_tangent_after_reparametrization,
     "lecture02.q4": _third_derivative_from_betas,
 }
 
+_KINDS = {"number": _NUMBERS, "vector": _VECTORS, "choice": _CHOICES}
 
-def _unknown(question_id: object, vector: bool) -> Verdict:
-    """The verdict for an id that ``check_number`` (or ``check_vector``) does not know."""
-    mine, other = (LECTURE_QUESTIONS, LECTURE_VECTORS)
-    if vector:
-        mine, other = other, mine
-    if isinstance(question_id, str) and question_id in other:
-        use = "check_number" if vector else "check_vector"
-        return Verdict(question_id, False, f"this question is checked with {use}.")
-    return Verdict(str(question_id), False, f"unknown question id (known: {', '.join(mine)}).")
+#: question id -> its kind, "number", "vector" or "choice" (no answers here)
+LECTURE_QUESTIONS: Mapping[str, str] = {
+    qid: kind for kind, table in _KINDS.items() for qid in sorted(table)
+}
+
+
+_CHECKER = {"number": "check_number", "vector": "check_vector", "choice": "quiz"}
+
+
+def _unknown(question_id: object, kind: str) -> Verdict:
+    """The verdict for an id that the check of ``kind`` does not know."""
+    other = LECTURE_QUESTIONS.get(question_id) if isinstance(question_id, str) else None
+    if other is not None:
+        return Verdict(question_id, False, f"this question is checked with {_CHECKER[other]}.")
+    known = ", ".join(sorted(_KINDS[kind]))
+    return Verdict(str(question_id), False, f"unknown question id (known: {known}).")
 
 
 def check_number(question_id: str, answer: object, rtol: float = 1e-9) -> Verdict:
     """Check a numeric lecture answer; never raises, never prints the expected value."""
-    if question_id not in LECTURE_QUESTIONS:
-        return _unknown(question_id, vector=False)
+    if question_id not in _NUMBERS:
+        return _unknown(question_id, "number")
 
     def validate(a):
         value = as_number(a, "your answer")
-        if np.isclose(value, LECTURE_QUESTIONS[question_id](), rtol=rtol, atol=1e-12):
+        if np.isclose(value, _NUMBERS[question_id](), rtol=rtol, atol=1e-12):
             return True, "correct."
         return False, "not the expected value -- check your computation."
 
@@ -203,15 +329,36 @@ def check_vector(question_id: str, answer: object, rtol: float = 1e-9) -> Verdic
     Never raises and never prints the expected vector.  A wrong answer is told which
     component is wrong, or that only its length, or only its orientation, is.
     """
-    if question_id not in LECTURE_VECTORS:
-        return _unknown(question_id, vector=True)
+    if question_id not in _VECTORS:
+        return _unknown(question_id, "vector")
 
     def validate(a):
         value = as_vector(a, (2,), "your answer", "a plane vector [x, y]")
-        expected = LECTURE_VECTORS[question_id]()
+        expected = _VECTORS[question_id]()
         tol = rtol * max(1.0, float(np.linalg.norm(expected)))
         if np.all(np.abs(value - expected) <= tol):
             return True, "correct."
         return False, "not the expected vector: " + _what_is_wrong(value, expected, tol)
 
     return run_validate(question_id, validate, answer)
+
+
+def quiz(question_id: str, answer: object) -> Verdict:
+    """Show a practice multiple-choice question with its options and the verdict on ``answer``.
+
+    Answers are read like homework choices: case, spaces and order do not matter (``"B, d"``
+    is ``["d", "b"]``).  Never raises; says only "right" or "not this one".
+    """
+    if question_id not in _CHOICES:
+        return _unknown(question_id, "choice")
+    q = _CHOICES[question_id]
+    lines = "; ".join(f"({k}) {v}" for k, v in zip(q.letters, q.options, strict=True))
+
+    def validate(a):
+        mine = as_choice(a, q.letters, "your answer")
+        if mine == as_choice(q.right(), q.letters, "the right answer"):
+            return True, "right."
+        return False, "not this one -- think again (re-read the statement)."
+
+    v = run_validate(question_id, validate, answer)
+    return Verdict(v.question, v.passed, f"{q.prompt} {lines} -- {v.message}", v.status)
