@@ -18,7 +18,7 @@ from .constructions import (
 )
 from .curvature import plot_curvature_comb, plot_curvature_profile
 from .curves import plot_control_polygon, plot_curve
-from .style import ROLE_COLORS, new_figure
+from .style import OKABE_ITO, ROLE_COLORS, new_figure
 from .vectors import plot_frame, plot_osculating_circle, plot_vectors, plot_velocity
 
 __all__ = [
@@ -75,7 +75,7 @@ def degree_raising_figure(V, W):
     """Lecture 04, ``nb04-013`` (Fig. 5): the cubic polygon ``V`` (grey), the quartic ``W``."""
     fig, ax = new_figure(figsize=(6.5, 4.4))
     plot_curve(ax, _bezier(W), points=False)
-    plot_control_polygon(ax, V, labels=["", "$V_1$", "$V_2$", ""], color="#999999")
+    plot_control_polygon(ax, V, labels=["", "$V_1$", "$V_2$", ""], color=ROLE_COLORS["polygon"])
     plot_control_polygon(ax, W, labels="$W_{i}$")
     ax.set_adjustable("box")
     ax.set_ylim(-0.3, 3.1)
@@ -108,7 +108,7 @@ def farin_boehm_figure(q_poly, stitched, fb, beta1: float):
 
 def catmull_rom_figure(P, curves: Mapping[float, object]):
     """Lecture 04, ``nb04-044`` (Fig. 9): one panel per β1, and all of them overlaid."""
-    colors = ("black", "#009E73", "#CC79A7")
+    colors = ("black", OKABE_ITO["bluish_green"], OKABE_ITO["reddish_purple"])
     fig, axs = new_figure(2, 2, figsize=(8.8, 4.6))
     for ax, (beta, cr), color in zip(axs.flat, curves.items(), colors, strict=False):
         plot_curve(ax, cr, polygon=False, points=False)
@@ -450,7 +450,7 @@ def glyph_points_figure(outline, implied):
 
     fig, ax = new_figure(figsize=(5.2, 5.2))
     plot_outline(ax, outline, comb=False, polygon=True, marks=(), legend=False)
-    ax.plot(*np.asarray(implied).T, "o", ms=7, color="#009E73", label="implied on-curve points")
+    ax.plot(*np.asarray(implied).T, "o", ms=7, color=OKABE_ITO["bluish_green"], label="implied on-curve points")
     ax.legend(loc="lower right")
     ax.set_title(f"DejaVu Sans {outline.name!r}: points and segments")
     return fig
