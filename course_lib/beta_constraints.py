@@ -31,6 +31,7 @@ from functools import lru_cache
 
 import numpy as np
 
+from . import own_work
 from ._bell import bell_row, bell_table, check_chain_rule_order
 from ._validation import as_real_array, check_integer
 
@@ -238,6 +239,7 @@ def beta_coefficients(betas: np.ndarray | list[float]) -> np.ndarray:
     -------
     ndarray of shape (n, n), lower triangular.
     """
+    own_work.require("course_lib.beta_constraints.beta_coefficients")
     b = _as_betas(betas)
     n = b.size
     return bell_table(b, n)[1:, 1:]
@@ -289,6 +291,7 @@ def apply_beta_constraints(q_derivs: np.ndarray, betas: np.ndarray | list[float]
     ndarray of shape (n, dim)
         ``r^{(i)}(0) = sum_k B_{i,k}(β) q^{(k)}(1)`` (seed 000 eq. (6), (7.1)-(7.4)).
     """
+    own_work.require("course_lib.beta_constraints.apply_beta_constraints")
     b = _as_betas(betas)
     Q = _as_derivs(q_derivs, "q_derivs", b.size)[: b.size]
     return beta_coefficients(b) @ Q
@@ -334,6 +337,7 @@ def solve_shape_parameters(q_derivs: np.ndarray, r_derivs: np.ndarray) -> ShapeP
     ValueError
         If ``q^{(1)}(1) = 0`` (``q`` not regular at the joint) or the shapes differ.
     """
+    own_work.require("course_lib.beta_constraints.solve_shape_parameters")
     R = _as_derivs(r_derivs, "r_derivs")
     n = R.shape[0]
     Q = _as_derivs(q_derivs, "q_derivs", n)[:n]

@@ -40,6 +40,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from . import own_work
 from ._validation import as_parameter_array, as_points, check_shape_parameters, scaled_norm
 from .bezier import _bernstein
 from .curve import PiecewiseBezier
@@ -177,6 +178,7 @@ def _leg_weights(b1: np.ndarray, b2: np.ndarray, seed_indexing: bool = False):
 # ------------------------------------------------------------- constructions
 def _quadratic_polygons(V: np.ndarray, b1: np.ndarray) -> np.ndarray:
     """Segments (m-1, 3, D) of the quadratic G1 Beta-spline; b1 one per leg (m values)."""
+    own_work.require("course_lib.beta_splines._quadratic_polygons")
     w = 1.0 / (1.0 + b1[:, None])
     J = (b1[:, None] * w) * V[:-1] + w * V[1:]  # J_i on leg i (no overflow for huge β1)
     S = V.shape[0] - 2
@@ -270,6 +272,7 @@ def quadratic_beta_spline(V: np.ndarray, beta1: float | np.ndarray = 1.0) -> Pie
         Fewer than 3 points, β1 <= 0 or wrong length (naming the joint), coincident
         consecutive control points (zero tangent at a junction).
     """
+    own_work.require("course_lib.beta_splines.quadratic_beta_spline")
     P = as_points(V, "V", min_points=3)
     m = P.shape[0] - 1
     b1 = _per_site(beta1, "beta1", m, m - 2, "leg V_i V_(i+1)", 1.0, True)

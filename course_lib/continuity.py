@@ -53,6 +53,7 @@ from functools import lru_cache
 
 import numpy as np
 
+from . import own_work
 from ._bell import bell_row, check_chain_rule_order
 from ._validation import check_finite_scalar, check_integer, scaled_norm
 from .differential_geometry import _arc_length_derivatives_unit, _typical_speed
@@ -405,6 +406,7 @@ def joint_continuity(
         geometric continuity is defined for regular parametrizations only; or
         ``max_order`` above the cap.
     """
+    own_work.require("course_lib.continuity.joint_continuity")
     q = as_parametrization(q, "q")
     r = as_parametrization(r, "r")
     n, rtol, atol = _check_options(max_order, rtol, atol)
@@ -491,6 +493,7 @@ def curve_continuity(
     ``[t_i, t_{i+1}]``, seed 004 §19.7), so the knots affect ``c_order`` but
     not ``g_order``.
     """
+    own_work.require("course_lib.continuity.curve_continuity")
     from .curve import PiecewiseBezier
 
     if not isinstance(curve, PiecewiseBezier):

@@ -1,0 +1,248 @@
+"""Points only for one's own work: the library does not do a homework's function exercises.
+
+Each function question of a homework (``hw03.q7``: write ``knot_ratio_beta1``) has
+implementations in ``course_lib`` -- the very function the exercise asks for, or one that does
+it in a call or two.  :data:`EXERCISES` maps each function question to them.  While a student's
+function for a question is being evaluated -- by the grader's probe in the sandboxed kernel
+(``course_lib._probe``) and by the question's feedback check in the student's own kernel
+(``course_lib.checks._core.call_answer``) -- those implementations raise :class:`ExerciseError`
+with one sentence::
+
+    course_lib.knot_splines.knot_ratio_beta1 is the exercise of hw03.q7: write it yourself
+
+How it holds
+------------
+Each implementation calls :func:`require` with its own dotted name as its first statement, so
+the guard is part of the function object itself: an alias bound before the check
+(``f = knot_ratio_beta1``), ``importlib``, ``getattr`` and ``__wrapped__`` all reach the same
+body, and there is no unguarded original (no wrapper, no closure holding one).  The exercise is
+active while a frame of :func:`run_exercise` is on the calling thread's stack -- its local
+``guarded`` names the implementations -- and, for other threads and child processes, while it
+is listed in a process-wide set and in the environment variable ``COURSE_LIB_EXERCISE``.  The
+evaluator activates it at evaluation time and restores the state afterwards, so nothing a
+notebook sets before the check (a flag, a cleared list, a rebound name) switches it off, and
+a running frame's locals cannot be rewritten from Python.
+
+What it does not stop (README, "How grading is protected"): code in the same interpreter can
+always rewrite code in it -- a notebook that replaces :func:`require`'s code, this module's
+globals, the probe or ``__import__`` before the evaluation can call the library unguarded;
+copying a function's source text out of ``course_lib`` is copying, as from a book.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import threading
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from types import MappingProxyType
+from typing import Any
+
+__all__ = [
+    "EXERCISES",
+    "Exercise",
+    "ExerciseError",
+    "exercise_message",
+    "questions_of",
+    "require",
+    "run_exercise",
+]
+
+ENV_VAR = "COURSE_LIB_EXERCISE"
+
+
+class ExerciseError(RuntimeError):
+    """A library function was called while it is the exercise being evaluated."""
+
+
+@dataclass(frozen=True)
+class Exercise:
+    """A function question: its answer name, what solves it in ``course_lib``, what it may use.
+
+    ``implementations`` are dotted names (``"course_lib.knot_splines.knot_ratio_beta1"``) of
+    functions whose body starts with ``require(<that name>)``; ``may_use`` is the sentence the
+    homework text prints under the question.
+    """
+
+    question: str
+    answer_name: str
+    implementations: tuple[str, ...]
+    may_use: str
+
+
+def _ex(question: str, answer_name: str, may_use: str, *implementations: str) -> Exercise:
+    return Exercise(
+        question, answer_name, tuple(f"course_lib.{n}" for n in implementations), may_use
+    )
+
+
+_NUMPY_ONLY = "numpy (and plain Python); no function of `course_lib`"
+
+#: Function question -> :class:`Exercise` (read-only).  A new function question of a homework
+#: gets a row here (``tests/test_own_work.py`` fails naming the missing one).
+EXERCISES: Mapping[str, Exercise] = MappingProxyType(
+    {
+        e.question: e
+        for e in (
+            _ex(
+                "hw01.q2",
+                "chain_rule_derivatives",
+                _NUMPY_ONLY,
+                "reparametrization.faa_di_bruno",
+                "_bell.compose_derivatives",
+                "beta_constraints.apply_beta_constraints",
+                "beta_constraints.beta_coefficients",
+            ),
+            _ex(
+                "hw02.q3",
+                "is_g1",
+                _NUMPY_ONLY,
+                "beta_constraints.solve_shape_parameters",
+                "continuity.joint_continuity",
+                "continuity.curve_continuity",
+            ),
+            _ex(
+                "hw03.q2",
+                "g1_bezier_control_points",
+                _NUMPY_ONLY,
+                "knot_splines.bezier_points_from_g1",
+                "knot_splines.g1_knot_spline",
+                "knot_splines._joint_points",
+            ),
+            _ex("hw03.q7", "knot_ratio_beta1", _NUMPY_ONLY, "knot_splines.knot_ratio_beta1"),
+            _ex(
+                "hw04.q2",
+                "g2_stitch",
+                _NUMPY_ONLY,
+                "stitching.g1_stitch_points",
+                "stitching.g2_stitch_points",
+                "stitching._g2_points",
+                "stitching.g2_stitch",
+                "stitching.gn_stitch_points",
+                "stitching.gn_stitch",
+                "beta_constraints.apply_beta_constraints",
+                "beta_constraints.beta_coefficients",
+            ),
+            _ex(
+                "hw04.q4",
+                "quadratic_beta_spline",
+                _NUMPY_ONLY,
+                "beta_splines.quadratic_beta_spline",
+                "beta_splines._quadratic_polygons",
+            ),
+            _ex(
+                "hw05.q2",
+                "implied_is_g2",
+                _NUMPY_ONLY,
+                "outlines.classify_joints",
+                "continuity.joint_continuity",
+                "continuity.curve_continuity",
+            ),
+            _ex(
+                "hw05.q5",
+                "g2_run",
+                "numpy and `course_lib.beta_splines.cubic_beta_spline` (the B-spline itself); "
+                "the phantom vertices are the exercise",
+            ),
+        )
+    }
+)
+
+_getframe = sys._getframe
+_lock = threading.Lock()
+_ACTIVE: list[frozenset[str]] = []  # guarded names of every evaluation running in this process
+
+
+def _from_environment() -> frozenset[str]:
+    """Questions a parent process was evaluating when it started this one."""
+    names = set()
+    for qid in os.environ.get(ENV_VAR, "").split(","):
+        if qid in EXERCISES:
+            names.update(EXERCISES[qid].implementations)
+    return frozenset(names)
+
+
+_INHERITED = _from_environment()
+
+
+def questions_of(answer_name: object) -> tuple[str, ...]:
+    """The function questions whose answer is named ``answer_name`` (e.g. ``("hw03.q7",)``)."""
+    return tuple(q for q, e in EXERCISES.items() if e.answer_name == answer_name)
+
+
+def exercise_message(implementation: str, question: str) -> str:
+    """The one sentence of :class:`ExerciseError`."""
+    return f"{implementation} is the exercise of {question}: write it yourself"
+
+
+def _owner(implementation: str, guarded: object) -> str | None:
+    if isinstance(guarded, dict):
+        return guarded.get(implementation)
+    return None
+
+
+def _question_of(implementation: str) -> str:
+    for q, e in EXERCISES.items():
+        if implementation in e.implementations:
+            return q
+    return "a homework"
+
+
+def require(implementation: str) -> None:
+    """Raise :class:`ExerciseError` if ``implementation`` is an exercise being evaluated now.
+
+    Called as the first statement of every implementation listed in :data:`EXERCISES`.
+    Outside an evaluation it costs a walk up the calling frames.
+    """
+    frame = _getframe(1)
+    while frame is not None:
+        if frame.f_code is _RUN_CODE:
+            question = _owner(implementation, frame.f_locals.get("guarded"))
+            if question is not None:
+                raise ExerciseError(exercise_message(implementation, question))
+        frame = frame.f_back
+    if implementation in _INHERITED or any(implementation in names for names in list(_ACTIVE)):
+        raise ExerciseError(exercise_message(implementation, _question_of(implementation)))
+
+
+def _guarded(questions: tuple[str, ...]) -> dict[str, str]:
+    out: dict[str, str] = {}
+    for q in questions:
+        exercise = EXERCISES.get(q)
+        if exercise is not None:
+            for name in exercise.implementations:
+                out.setdefault(name, q)
+    return out
+
+
+def run_exercise(
+    questions: tuple[str, ...], func: Callable[..., Any], /, *args: Any, **kwargs: Any
+) -> Any:
+    """Call ``func(*args, **kwargs)`` with the exercises of ``questions`` guarded.
+
+    The probe calls a student's function through this when the grader asks for it, and the
+    feedback checks do too (:func:`course_lib.checks._core.call_answer`); the state is restored
+    afterwards, whatever happens.
+    """
+    guarded = _guarded(tuple(questions))  # read by require() in this frame's locals
+    names = frozenset(guarded)
+    previous = os.environ.get(ENV_VAR)
+    with _lock:
+        _ACTIVE.append(names)
+    os.environ[ENV_VAR] = ",".join(sorted(set(questions)))
+    try:
+        return func(*args, **kwargs)
+    finally:
+        with _lock:
+            try:
+                _ACTIVE.remove(names)
+            except ValueError:  # a notebook emptied the list: nothing to restore
+                pass
+        if previous is None:
+            os.environ.pop(ENV_VAR, None)
+        else:
+            os.environ[ENV_VAR] = previous
+
+
+_RUN_CODE = run_exercise.__code__

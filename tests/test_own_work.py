@@ -1,0 +1,344 @@
+"""Points only for one's own work (issue 24): the library does not do a function exercise.
+
+For every function question of every homework, a submission that calls ``course_lib``'s
+implementation of it -- directly, through an alias bound before the check, through
+``importlib`` or ``getattr`` on the module, from another thread, after clearing the guard's
+state -- gets 0 for that question from the grader (the hidden test through ``LocalStudent``:
+the probe's own code, in-process) and a failing check, both with the one sentence
+"<implementation> is the exercise of <question>: write it yourself".  The honest solution keeps
+full marks.  One lazy notebook is also graded end to end in the sandboxed kernel.
+"""
+
+from __future__ import annotations
+
+import ast
+import functools
+import importlib
+import inspect
+import json
+import threading
+from pathlib import Path
+
+import numpy as np
+import pytest
+from _homework_support import VariantHomework, load
+
+from course_lib import own_work, variants
+from course_lib.checks import HOMEWORKS, check, questions, registry
+
+ROOT = Path(__file__).resolve().parents[1]
+HIDDEN = {
+    hw: load(f"hidden_{hw}_own_work", ROOT / "solutions" / "hidden_tests" / f"{hw}.py")
+    for hw in HOMEWORKS
+}
+
+from grading.protocol import LocalStudent, run_question  # noqa: E402  (path set by _homework_support)
+
+
+def _outline_of(P0, A, B, P2):
+    from course_lib.outlines import Outline, truetype_contour
+
+    pts = np.array([P0, A, B, P2], dtype=float)
+    return Outline((truetype_contour(pts, np.array([True, False, False, True])),), "one joint")
+
+
+#: question -> (module, implementation, how a lazy submission turns it into the answer)
+LAZY = {
+    "hw01.q2": (
+        "course_lib.reparametrization",
+        "faa_di_bruno",
+        lambda impl, q1, q2, f1, f2: impl(np.array([q1, q2]), np.array([f1, f2])),
+    ),
+    "hw02.q3": (
+        "course_lib.beta_constraints",
+        "solve_shape_parameters",
+        lambda impl, q, r, tol=1e-9: bool(
+            impl(np.array([q], float), np.array([r], float)).betas[0] > 0
+        ),
+    ),
+    "hw03.q2": ("course_lib.knot_splines", "bezier_points_from_g1", lambda impl, d, k: impl(d, k)),
+    "hw03.q7": ("course_lib.knot_splines", "knot_ratio_beta1", lambda impl, t: impl(t)),
+    "hw04.q2": (
+        "course_lib.stitching",
+        "g2_stitch_points",
+        lambda impl, V, b1, b2: impl(V, b1, b2),
+    ),
+    "hw04.q4": (
+        "course_lib.beta_splines",
+        "quadratic_beta_spline",
+        lambda impl, V, b: np.array(impl(V, b).segments),
+    ),
+    "hw05.q2": (
+        "course_lib.outlines",
+        "classify_joints",
+        lambda impl, P0, A, B, P2: bool(impl(_outline_of(P0, A, B, P2)).kind[1] == "G2"),
+    ),
+}
+
+
+def _lazy(qid: str, style: str):
+    """A student's answer to ``qid`` that calls the library's implementation, in ``style``."""
+    module_name, name, adapt = LAZY[qid]
+    if style == "direct":
+        impl = getattr(importlib.import_module(module_name), name)  # `from m import f` at the top
+        return lambda *a: adapt(impl, *a)
+    if style == "alias":
+        alias = getattr(importlib.import_module(module_name), name)  # `f = knot_ratio_beta1`
+
+        def answer(*a):
+            return adapt(alias, *a)
+
+        return answer
+    if style == "importlib":
+        return lambda *a: adapt(getattr(importlib.import_module(module_name), name), *a)
+    if style == "getattr":
+        module = importlib.import_module(module_name)
+        return lambda *a: adapt(getattr(module, name), *a)
+    if style == "wrapped":  # whatever a wrapper would hide: __wrapped__, a closure, __code__
+        impl = getattr(importlib.import_module(module_name), name)
+        inner = getattr(impl, "__wrapped__", impl)
+        return lambda *a: adapt(inner, *a)
+    if style == "thread":  # the call made on another thread
+
+        def in_thread(*a):
+            out = {}
+
+            def run():
+                try:
+                    out["value"] = adapt(getattr(importlib.import_module(module_name), name), *a)
+                except BaseException as exc:  # carried back to the caller
+                    out["error"] = exc
+
+            t = threading.Thread(target=run)
+            t.start()
+            t.join()
+            if "error" in out:
+                raise out["error"]
+            return out["value"]
+
+        return in_thread
+    if style == "cleared":  # the guard's process-wide state emptied inside the function
+
+        def cleared(*a):
+            own_work._ACTIVE.clear()
+            return adapt(getattr(importlib.import_module(module_name), name), *a)
+
+        return cleared
+    raise AssertionError(style)
+
+
+STYLES = ("direct", "alias", "importlib", "getattr", "wrapped", "thread", "cleared")
+
+
+def _function_questions() -> dict[str, str]:
+    """question -> answer name, for every registered question answered by a function."""
+    out = {}
+    for hw in HOMEWORKS:
+        for qid in questions(hw):
+            name = registry()[qid].answer_name
+            if not name.startswith("answer_"):
+                out[qid] = name
+    return out
+
+
+def _grade(qid: str, namespace: dict) -> tuple[float, str]:
+    hw, q = qid.split(".")
+    test = functools.partial(getattr(HIDDEN[hw], q), data=variants.data(hw, variants.DEFAULT))
+    return run_question(test, LocalStudent(namespace))
+
+
+def test_every_function_question_has_a_row_and_its_answer_name():
+    rows = {q: e.answer_name for q, e in own_work.EXERCISES.items()}
+    assert rows == _function_questions()
+    names = [e.answer_name for e in own_work.EXERCISES.values()]
+    assert len(set(names)) == len(names), "the probe finds the question by its answer name"
+
+
+def test_every_library_one_liner_of_the_table_is_guarded():
+    assert {q for q, e in own_work.EXERCISES.items() if e.implementations} == set(LAZY)
+    for qid, (module_name, name, _) in LAZY.items():
+        assert f"{module_name}.{name}" in own_work.EXERCISES[qid].implementations
+
+
+@pytest.mark.parametrize(
+    "dotted", sorted({n for e in own_work.EXERCISES.values() for n in e.implementations})
+)
+def test_every_implementation_starts_with_its_own_guard(dotted):
+    module_name, name = dotted.rsplit(".", 1)
+    func = getattr(importlib.import_module(module_name), name)
+    assert not hasattr(func, "__wrapped__") and func.__closure__ is None  # no unguarded original
+    tree = ast.parse(inspect.getsource(func).lstrip())
+    body = tree.body[0].body
+    first = (
+        body[1]
+        if isinstance(body[0], ast.Expr) and isinstance(body[0].value, ast.Constant)
+        else body[0]
+    )
+    assert ast.unparse(first) == f"own_work.require({dotted!r})"
+
+
+@pytest.mark.parametrize("style", STYLES)
+@pytest.mark.parametrize("qid", sorted(LAZY))
+def test_library_call_gets_zero_from_the_grader_and_fails_the_check(qid, style):
+    answer = _lazy(qid, style)
+    implementation = ".".join(LAZY[qid][:2])
+    sentence = own_work.exercise_message(implementation, qid)
+    assert sentence == f"{implementation} is the exercise of {qid}: write it yourself"
+    verdict = check(qid, answer)
+    assert not verdict.passed and verdict.message == sentence + ".", verdict.message
+    fraction, note = _grade(qid, {own_work.EXERCISES[qid].answer_name: answer})
+    assert fraction == 0.0 and sentence in note, note
+    assert not own_work._ACTIVE  # restored after the evaluation
+
+
+@pytest.mark.parametrize("qid", sorted(LAZY))
+def test_the_same_call_works_outside_an_evaluation(qid):
+    """The guard is what stops the one-liner: outside the check and the probe it answers."""
+    answer = _lazy(qid, "direct")
+    args = {
+        "hw01.q2": (np.array([1.0, 2.0]), np.array([0.0, 2.0]), 1.5, 1.0),
+        "hw02.q3": (np.array([1.0, 2.0]), np.array([2.0, 4.0])),
+        "hw03.q2": (np.arange(12.0).reshape(6, 2) ** 1.5, np.array([0.0, 1.0, 3.0])),
+        "hw03.q7": (np.array([0.0, 1.0, 3.0]),),
+        "hw04.q2": (np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 3.0], [4.0, 2.0]]), 1.5, 1.0),
+        "hw04.q4": (
+            np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]]),
+            np.array([1.0, 2.0, 0.5]),
+        ),
+        "hw05.q2": tuple(
+            np.array(p) for p in ([913.5, 877.5], [830.0, 993.0], [538.0, 993.0], [454.5, 877.5])
+        ),
+    }[qid]
+    assert answer(*args) is not None
+
+
+def test_state_set_before_the_check_does_not_switch_the_guard_off(monkeypatch):
+    """A notebook that empties the guard's state or the environment before its check."""
+    monkeypatch.setenv(own_work.ENV_VAR, "")
+    own_work._ACTIVE.clear()
+    from course_lib.knot_splines import knot_ratio_beta1 as alias
+
+    verdict = check("hw03.q7", alias)
+    assert "is the exercise of hw03.q7" in verdict.message
+    fraction, note = _grade("hw03.q7", {"knot_ratio_beta1": alias})
+    assert fraction == 0 and "is the exercise of hw03.q7" in note
+
+
+def test_a_child_process_inherits_the_exercise(tmp_path):
+    import subprocess
+    import sys
+
+    code = (
+        "import numpy as np\n"
+        "from course_lib.knot_splines import knot_ratio_beta1\n"
+        "print(knot_ratio_beta1(np.array([0.0, 1.0, 3.0])))\n"
+    )
+
+    def in_child(t):
+        run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+        if run.returncode:
+            raise RuntimeError(run.stderr.strip().splitlines()[-1])
+        return np.array([2.0] * (len(t) - 2))
+
+    verdict = check("hw03.q7", in_child)
+    assert "is the exercise of hw03.q7" in verdict.message
+
+
+def test_other_questions_and_plain_use_are_not_guarded():
+    """Outside an evaluation, and during another question's, the library works as always."""
+    from course_lib.knot_splines import bezier_points_from_g1
+
+    D = np.array([[0, 0], [1, 2], [2, 3], [4, 3], [5, 1], [6, 0]], dtype=float)
+    ref = bezier_points_from_g1(D, [0.0, 1.0, 3.0])
+
+    def knot_ratio_using_another_exercise(t):
+        bezier_points_from_g1(D, [0.0, 1.0, 3.0])  # hw03.q2's implementation, inside q7: allowed
+        h = np.diff(t)
+        return h[1:] / h[:-1]
+
+    assert check("hw03.q7", knot_ratio_using_another_exercise).passed
+    assert np.allclose(bezier_points_from_g1(D, [0.0, 1.0, 3.0]), ref)
+
+
+@pytest.fixture(scope="module")
+def solution_namespaces():
+    return {hw: VariantHomework(hw).solution_namespace(variants.DEFAULT) for hw in HOMEWORKS}
+
+
+@pytest.mark.parametrize("qid", sorted(own_work.EXERCISES))
+def test_the_honest_solution_keeps_full_marks(qid, solution_namespaces):
+    ns = solution_namespaces[qid.split(".")[0]]
+    name = own_work.EXERCISES[qid].answer_name
+    assert check(qid, ns[name]).passed
+    assert _grade(qid, ns)[0] == 1.0
+
+
+# ------------------------------------------------------------------ in the sandboxed kernel
+LAZY_CELLS = {
+    "knot_ratio_beta1": (
+        "from course_lib.knot_splines import knot_ratio_beta1 as _library_ratio\n"
+        "knot_ratio_beta1 = _library_ratio  # an alias bound before the check\n"
+    ),
+    "g1_bezier_control_points": (
+        "import importlib\n"
+        "def g1_bezier_control_points(d, knots):\n"
+        "    return importlib.import_module('course_lib.knot_splines').bezier_points_from_g1(d, knots)\n"
+    ),
+}
+
+
+@pytest.mark.slow
+@pytest.mark.timeout(300)
+def test_a_lazy_notebook_graded_in_the_sandbox(tmp_path):
+    import nbformat
+
+    grade = load("grade_own_work", ROOT / "tools" / "grade.py")
+    (solution,) = sorted((ROOT / "solutions").glob("hw03_*.ipynb"))
+    nb = nbformat.read(solution, as_version=4)
+    for cell in nb.cells:
+        for name, source in LAZY_CELLS.items():
+            if cell.cell_type == "code" and cell.source.lstrip().startswith(f"def {name}("):
+                cell.source = source
+    assert sum(c.source in LAZY_CELLS.values() for c in nb.cells) == 2
+    subs = tmp_path / "subs"
+    subs.mkdir()
+    nbformat.write(nb, subs / "lazy.ipynb")
+    out = tmp_path / "out"
+    code = grade.main(
+        [
+            "--tests",
+            str(ROOT / "solutions/hidden_tests/hw03.py"),
+            "--submissions",
+            str(subs),
+            "--out",
+            str(out),
+            "--jobs",
+            "1",
+        ]
+    )
+    assert code == 0
+    (row,) = json.loads((out / "results.json").read_text(encoding="utf-8"))["results"]
+    points = row["points"]
+    assert points["q2"] == 0 and points["q7"] == 0
+    assert all(points[q] == p for q, p in HIDDEN["hw03"].POINTS.items() if q not in ("q2", "q7"))
+    assert (
+        "bezier_points_from_g1 is the exercise of hw03.q2: write it yourself" in row["notes"]["q2"]
+    )
+    assert "knot_ratio_beta1 is the exercise of hw03.q7: write it yourself" in row["notes"]["q7"]
+
+
+@pytest.mark.parametrize("hw", HOMEWORKS)
+def test_the_homework_text_states_the_rule_and_what_each_function_may_use(hw):
+    import nbformat
+
+    (path,) = sorted((ROOT / "exercises").glob(f"{hw}_*.ipynb"))
+    cells = [c.source for c in nbformat.read(path, as_version=4).cells if c.cell_type == "markdown"]
+    flat = [" ".join(c.replace("#", " ").split()) for c in cells]
+    assert "Your own work." in flat[0] and "write it yourself" in flat[0]
+    for qid, exercise in own_work.EXERCISES.items():
+        if qid.startswith(hw):
+            (text,) = [c for c in flat if f"Question {qid.split('.q')[1]} —" in c]
+            assert f"You may use:** {' '.join(exercise.may_use.split())}." in text
+            for name in exercise.implementations:
+                if not name.rsplit(".", 1)[1].startswith("_"):
+                    assert f"`{name}`" in text
