@@ -151,7 +151,6 @@ MAX_SYMBOLIC_ORDER = 12
 _CHAIN_RULE_AUTO_MAX = 6
 
 
-@lru_cache(maxsize=32)
 def beta_constraints(n: int, method: str = "auto") -> BetaConstraints:
     """Derive the Beta-constraints of orders ``1..n`` by the chain rule (seed 000 eq. (4)-(6)).
 
@@ -174,6 +173,14 @@ def beta_constraints(n: int, method: str = "auto") -> BetaConstraints:
     r^(1)(0) = beta1 q^(1)(1)
     r^(2)(0) = beta1^2 q^(2)(1) + beta2 q^(1)(1)
     """
+    own_work.require("course_lib.beta_constraints.beta_constraints")
+    return _cached_constraints(n, method)
+
+
+@lru_cache(maxsize=32)
+def _cached_constraints(n: int, method: str) -> BetaConstraints:
+    # the cache sits behind the guard: a cached result is not handed out during an exercise
+    own_work.require("course_lib.beta_constraints.beta_constraints")
     n = check_integer(n, "n", minimum=1)
     if n > MAX_SYMBOLIC_ORDER:
         raise ValueError(
@@ -188,7 +195,11 @@ def beta_constraints(n: int, method: str = "auto") -> BetaConstraints:
     return _chain_rule_constraints(n)
 
 
+beta_constraints.cache_clear = _cached_constraints.cache_clear  # type: ignore[attr-defined]
+
+
 def _bell_constraints(n: int) -> BetaConstraints:
+    own_work.require("course_lib.beta_constraints._bell_constraints")
     import sympy as sp
 
     betas = sp.symbols(f"beta1:{n + 1}")
@@ -203,6 +214,7 @@ def _bell_constraints(n: int) -> BetaConstraints:
 
 
 def _chain_rule_constraints(n: int) -> BetaConstraints:
+    own_work.require("course_lib.beta_constraints._chain_rule_constraints")
     sp, _t, u, q = _chain_rule_state()
     betas = sp.symbols(f"beta1:{n + 1}")
     Q = sp.symbols(f"q1:{n + 1}")

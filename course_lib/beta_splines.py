@@ -194,6 +194,7 @@ def _cubic_points(V: np.ndarray, b1: np.ndarray, b2: np.ndarray, seed_indexing: 
 
     ``seed_indexing=True`` uses the transcribed ratio γ_i : 1 : β1_i² γ_{i+1} (wrong).
     """
+    own_work.require("course_lib.beta_splines._cubic_points")
     a, b, c = _leg_weights(b1, b2, seed_indexing)
     W1 = (b + c)[:, None] * V[:-1] + a[:, None] * V[1:]
     W2 = c[:, None] * V[:-1] + (a + b)[:, None] * V[1:]
@@ -205,6 +206,7 @@ def _cubic_points(V: np.ndarray, b1: np.ndarray, b2: np.ndarray, seed_indexing: 
 def _junctions(W1: np.ndarray, W2: np.ndarray, b1: np.ndarray) -> np.ndarray:
     """``J_j = (β1_j W_{j-1,2} + W_{j,1}) / (1 + β1_j)`` (step (2)), without overflow for
     huge β1 or coordinates."""
+    own_work.require("course_lib.beta_splines._junctions")
     w = 1.0 / (1.0 + b1[:, None])
     return (b1[:, None] * w) * W2[:-1] + w * W1[1:]
 
@@ -324,6 +326,7 @@ def cubic_beta_spline(
         whose ratio sums to zero (Barsky's ``δ = 0``, a true pole); γ undefined at both
         ends of a leg with different β1 (no limit); a zero tangent at a junction vertex.
     """
+    own_work.require("course_lib.beta_splines.cubic_beta_spline")
     P = as_points(V, "V", min_points=4)
     m = P.shape[0] - 1
     b1 = _per_site(beta1, "beta1", m + 1, m - 3, "control vertex", 1.0, True)

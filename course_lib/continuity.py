@@ -222,6 +222,7 @@ def _solve_betas(Q: np.ndarray, R: np.ndarray):
     Q, R: (n, J, dim) derivatives of orders 1..n.  Returns betas (n, J), the residual
     vectors (n, J, dim) and the Bell table ``B[i, k] = B_{i,k}(β)`` (n+1, n+1, J), built
     order by order (``bell_row``)."""
+    own_work.require("course_lib.continuity._solve_betas")
     n, J = Q.shape[0], Q.shape[1]
     q1 = Q[0]
     qq = np.einsum("jd,jd->j", q1, q1)

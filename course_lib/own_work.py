@@ -23,9 +23,19 @@ evaluator activates it at evaluation time and restores the state afterwards, so 
 notebook sets before the check (a flag, a cleared list, a rebound name) switches it off, and
 a running frame's locals cannot be rewritten from Python.
 
+Value questions
+---------------
+A value (``answer_q1 = ...``) is computed when the notebook runs, not when the grader asks for
+it, so :data:`VALUE_EXERCISES` is guarded by the notebook itself: once ``course_lib.checks`` is
+imported (every homework's Preparations cell does), an implementation called from code whose
+globals hold ``HOMEWORK = "hwNN"`` -- any frame up the stack: a cell, a function of the
+notebook, ``exec`` from a cell -- raises if it computes a value question of ``hwNN``.  Lectures
+and the library's own users are untouched (they set no ``HOMEWORK``).
+
 What it does not stop (README, "How grading is protected"): code in the same interpreter can
 always rewrite code in it -- a notebook that replaces :func:`require`'s code, this module's
-globals, the probe or ``__import__`` before the evaluation can call the library unguarded;
+globals, the probe or ``__import__`` before the evaluation can call the library unguarded, and
+one that hides ``HOMEWORK`` (or computes in a thread) while it computes a value;
 copying a function's source text out of ``course_lib`` is copying, as from a book.
 """
 
@@ -41,6 +51,7 @@ from typing import Any
 
 __all__ = [
     "EXERCISES",
+    "VALUE_EXERCISES",
     "Exercise",
     "ExerciseError",
     "exercise_message",
@@ -79,75 +90,205 @@ def _ex(question: str, answer_name: str, may_use: str, *implementations: str) ->
 
 _NUMPY_ONLY = "numpy (and plain Python); no function of `course_lib`"
 
+_FUNCTIONS = (
+    _ex(
+        "hw01.q2",
+        "chain_rule_derivatives",
+        _NUMPY_ONLY,
+        "reparametrization.faa_di_bruno",
+        "_bell.compose_derivatives",
+        "beta_constraints.apply_beta_constraints",
+        "beta_constraints.beta_coefficients",
+    ),
+    _ex(
+        "hw02.q3",
+        "is_g1",
+        _NUMPY_ONLY,
+        "beta_constraints.solve_shape_parameters",
+        "continuity.joint_continuity",
+        "continuity.curve_continuity",
+    ),
+    _ex(
+        "hw03.q2",
+        "g1_bezier_control_points",
+        _NUMPY_ONLY,
+        "knot_splines.bezier_points_from_g1",
+        "knot_splines.g1_knot_spline",
+        "knot_splines._joint_points",
+    ),
+    _ex("hw03.q7", "knot_ratio_beta1", _NUMPY_ONLY, "knot_splines.knot_ratio_beta1"),
+    _ex(
+        "hw04.q2",
+        "g2_stitch",
+        _NUMPY_ONLY,
+        "stitching.g1_stitch_points",
+        "stitching.g2_stitch_points",
+        "stitching._g2_points",
+        "stitching.g2_stitch",
+        "stitching.gn_stitch_points",
+        "stitching.gn_stitch",
+        "beta_constraints.apply_beta_constraints",
+        "beta_constraints.beta_coefficients",
+    ),
+    _ex(
+        "hw04.q4",
+        "quadratic_beta_spline",
+        _NUMPY_ONLY,
+        "beta_splines.quadratic_beta_spline",
+        "beta_splines._quadratic_polygons",
+    ),
+    _ex(
+        "hw05.q2",
+        "implied_is_g2",
+        _NUMPY_ONLY,
+        "outlines.classify_joints",
+        "continuity.joint_continuity",
+        "continuity.curve_continuity",
+    ),
+    _ex(
+        "hw05.q5",
+        "g2_run",
+        "numpy and `course_lib.beta_splines.cubic_beta_spline` (the B-spline itself); "
+        "the phantom vertices are the exercise",
+    ),
+)
+
+_BY_HAND = "numpy, scipy and sympy; no function of `course_lib` that computes it"
+
+#: Value questions whose answer a library call computes.  A value is computed in the notebook,
+#: not when the grader asks for it, so these are guarded while the notebook's ``HOMEWORK`` is
+#: that homework (see :func:`require`).  hw05's values are read off ``classify_joints``, the
+#: tool its questions teach: they are practice, worth 0 points (README).
+_VALUES = (
+    _ex(
+        "hw01.q1",
+        "answer_q1",
+        _BY_HAND,
+        "differential_geometry.unit_tangent",
+        "differential_geometry.frame_from_derivatives",
+    ),
+    _ex(
+        "hw01.q4",
+        "answer_q4",
+        _BY_HAND,
+        "differential_geometry.signed_curvature",
+        "differential_geometry.curvature",
+        "differential_geometry.curvature_vector",
+        "differential_geometry.osculating_circle",
+        "differential_geometry.frame_from_derivatives",
+    ),
+    _ex(
+        "hw01.q5",
+        "answer_q5",
+        _BY_HAND,
+        "reparametrization.faa_di_bruno",
+        "_bell.compose_derivatives",
+        "beta_constraints.apply_beta_constraints",
+        "beta_constraints.beta_coefficients",
+    ),
+    _ex(
+        "hw01.q7",
+        "answer_q7",
+        _BY_HAND,
+        "differential_geometry.arc_length",
+        "differential_geometry.cumulative_arc_length",
+        "differential_geometry.parameter_at_arc_length",
+        "differential_geometry._integrate_speed",
+        "_bezier_length.segment_length",
+        "_bezier_length.segment_lengths",
+        "_bezier_length.robust_length",
+        "_bezier_length.hodograph_lengths",
+        "_bezier_length.piece_lengths",
+    ),
+    _ex(
+        "hw02.q1",
+        "answer_q1",
+        _BY_HAND,
+        "beta_constraints.solve_shape_parameters",
+        "continuity.joint_continuity",
+        "continuity.curve_continuity",
+        "continuity._solve_betas",
+    ),
+    _ex(
+        "hw02.q2",
+        "answer_q2",
+        _BY_HAND,
+        "beta_constraints.solve_shape_parameters",
+        "continuity.joint_continuity",
+        "continuity.curve_continuity",
+        "continuity._solve_betas",
+    ),
+    _ex(
+        "hw02.q4",
+        "answer_q4",
+        _BY_HAND,
+        "beta_constraints.beta_constraints",
+        "beta_constraints._bell_constraints",
+        "beta_constraints._chain_rule_constraints",
+        "beta_constraints.beta_coefficients",
+    ),
+    _ex(
+        "hw02.q5",
+        "answer_q5",
+        _BY_HAND,
+        "beta_constraints.apply_beta_constraints",
+        "beta_constraints.beta_coefficients",
+        "_bell.compose_derivatives",
+        "reparametrization.faa_di_bruno",
+    ),
+    _ex(
+        "hw03.q1",
+        "answer_q1",
+        _BY_HAND,
+        "knot_splines.bezier_points_from_g1",
+        "knot_splines.g1_knot_spline",
+        "knot_splines._joint_points",
+    ),
+    _ex(
+        "hw03.q3",
+        "answer_q3",
+        _BY_HAND,
+        "knot_splines.bezier_points_from_g1",
+        "knot_splines.g1_knot_spline",
+        "knot_splines._joint_points",
+    ),
+    _ex(
+        "hw03.q5",
+        "answer_q5",
+        _BY_HAND,
+        "knot_splines.bezier_points_from_g1",
+        "knot_splines.g1_knot_spline",
+        "knot_splines._joint_points",
+    ),
+    _ex(
+        "hw04.q1",
+        "answer_q1",
+        _BY_HAND,
+        "stitching.g1_stitch_points",
+        "stitching.g1_stitch",
+        "stitching.g2_stitch_points",
+        "stitching._g2_points",
+        "stitching.g2_stitch",
+        "stitching.gn_stitch_points",
+        "stitching.gn_stitch",
+    ),
+    _ex("hw04.q3", "answer_q3", _BY_HAND, "stitching.farin_boehm", "stitching.farin_boehm_gamma"),
+    _ex(
+        "hw04.q5",
+        "answer_q5",
+        _BY_HAND,
+        "beta_splines.cubic_beta_spline",
+        "beta_splines._cubic_points",
+        "beta_splines._junctions",
+    ),
+)
+
 #: Function question -> :class:`Exercise` (read-only).  A new function question of a homework
 #: gets a row here (``tests/test_own_work.py`` fails naming the missing one).
-EXERCISES: Mapping[str, Exercise] = MappingProxyType(
-    {
-        e.question: e
-        for e in (
-            _ex(
-                "hw01.q2",
-                "chain_rule_derivatives",
-                _NUMPY_ONLY,
-                "reparametrization.faa_di_bruno",
-                "_bell.compose_derivatives",
-                "beta_constraints.apply_beta_constraints",
-                "beta_constraints.beta_coefficients",
-            ),
-            _ex(
-                "hw02.q3",
-                "is_g1",
-                _NUMPY_ONLY,
-                "beta_constraints.solve_shape_parameters",
-                "continuity.joint_continuity",
-                "continuity.curve_continuity",
-            ),
-            _ex(
-                "hw03.q2",
-                "g1_bezier_control_points",
-                _NUMPY_ONLY,
-                "knot_splines.bezier_points_from_g1",
-                "knot_splines.g1_knot_spline",
-                "knot_splines._joint_points",
-            ),
-            _ex("hw03.q7", "knot_ratio_beta1", _NUMPY_ONLY, "knot_splines.knot_ratio_beta1"),
-            _ex(
-                "hw04.q2",
-                "g2_stitch",
-                _NUMPY_ONLY,
-                "stitching.g1_stitch_points",
-                "stitching.g2_stitch_points",
-                "stitching._g2_points",
-                "stitching.g2_stitch",
-                "stitching.gn_stitch_points",
-                "stitching.gn_stitch",
-                "beta_constraints.apply_beta_constraints",
-                "beta_constraints.beta_coefficients",
-            ),
-            _ex(
-                "hw04.q4",
-                "quadratic_beta_spline",
-                _NUMPY_ONLY,
-                "beta_splines.quadratic_beta_spline",
-                "beta_splines._quadratic_polygons",
-            ),
-            _ex(
-                "hw05.q2",
-                "implied_is_g2",
-                _NUMPY_ONLY,
-                "outlines.classify_joints",
-                "continuity.joint_continuity",
-                "continuity.curve_continuity",
-            ),
-            _ex(
-                "hw05.q5",
-                "g2_run",
-                "numpy and `course_lib.beta_splines.cubic_beta_spline` (the B-spline itself); "
-                "the phantom vertices are the exercise",
-            ),
-        )
-    }
-)
+EXERCISES: Mapping[str, Exercise] = MappingProxyType({e.question: e for e in _FUNCTIONS})
+
+#: Value question -> :class:`Exercise` (read-only): the library calls that compute its answer.
+VALUE_EXERCISES: Mapping[str, Exercise] = MappingProxyType({e.question: e for e in _VALUES})
 
 _getframe = sys._getframe
 _lock = threading.Lock()
@@ -164,6 +305,18 @@ def _from_environment() -> frozenset[str]:
 
 
 _INHERITED = _from_environment()
+
+
+def _value_guards() -> dict[tuple[str, str], str]:
+    """(homework, implementation) -> the value questions of that homework it computes."""
+    out: dict[tuple[str, str], list[str]] = {}
+    for q, e in VALUE_EXERCISES.items():
+        for name in e.implementations:
+            out.setdefault((q.split(".")[0], name), []).append(q)
+    return {k: " and ".join(v) for k, v in out.items()}
+
+
+_VALUE_GUARDS = _value_guards()
 
 
 def questions_of(answer_name: object) -> tuple[str, ...]:
@@ -195,6 +348,11 @@ def require(implementation: str) -> None:
     Called as the first statement of every implementation listed in :data:`EXERCISES`.
     Outside an evaluation it costs a walk up the calling frames.
     """
+    if implementation in _INHERITED:  # started by a process that was evaluating it
+        raise ExerciseError(exercise_message(implementation, _question_of(implementation)))
+    modules = sys.modules
+    if not (_ACTIVE or "course_lib._probe" in modules or "course_lib.checks" in modules):
+        return  # no evaluation can be running (benchmarks, plain library use): no frame walk
     frame = _getframe(1)
     while frame is not None:
         if frame.f_code is _RUN_CODE:
@@ -202,8 +360,17 @@ def require(implementation: str) -> None:
             if question is not None:
                 raise ExerciseError(exercise_message(implementation, question))
         frame = frame.f_back
-    if implementation in _INHERITED or any(implementation in names for names in list(_ACTIVE)):
+    if any(implementation in names for names in list(_ACTIVE)):
         raise ExerciseError(exercise_message(implementation, _question_of(implementation)))
+    if "course_lib.checks" in modules:  # a homework's Preparations cell imports the checks
+        frame = _getframe(1)
+        while frame is not None:
+            homework = frame.f_globals.get("HOMEWORK")
+            if isinstance(homework, str):
+                questions = _VALUE_GUARDS.get((homework, implementation))
+                if questions:
+                    raise ExerciseError(exercise_message(implementation, questions))
+            frame = frame.f_back
 
 
 def _guarded(questions: tuple[str, ...]) -> dict[str, str]:

@@ -153,6 +153,7 @@ def g1_stitch(V: np.ndarray, beta1: float, W_rest: np.ndarray) -> PiecewiseBezie
     PiecewiseBezier
         ``info``: ``beta1`` (one value), ``W01`` (the constructed ``W_0, W_1``).
     """
+    own_work.require("course_lib.stitching.g1_stitch")
     P = _polygon(V, min_points=2)
     W = g1_stitch_points(P, beta1)
     R = _rest(W_rest, P.shape[0] - 2, P.shape[1], "G1 fixed W_0, W_1")
@@ -199,6 +200,7 @@ def farin_boehm_gamma(beta1: float, beta2: float, d: int = 3, *, joint: int | No
         If ``β1 <= 0``, or ``β2 = -β1 (d-1)(1+β1)`` (denominator zero: γ undefined;
         the message names ``beta2`` and, if given, the joint).
     """
+    own_work.require("course_lib.stitching.farin_boehm_gamma")
     at = "" if joint is None else f" at joint {joint}"
     b1 = check_finite_scalar(beta1, "beta1")
     if b1 <= 0:
@@ -263,6 +265,7 @@ def farin_boehm(
     ValueError
         If ``β1 <= 0``, ``V_{d-1} = V_d``, or γ is undefined and ``at_infinity="raise"``.
     """
+    own_work.require("course_lib.stitching.farin_boehm")
     P = as_points(V_last3, "V_last3", min_points=3)
     if P.shape[0] != 3:
         raise ValueError(

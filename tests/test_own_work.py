@@ -160,9 +160,10 @@ def test_every_library_one_liner_of_the_table_is_guarded():
         assert f"{module_name}.{name}" in own_work.EXERCISES[qid].implementations
 
 
-@pytest.mark.parametrize(
-    "dotted", sorted({n for e in own_work.EXERCISES.values() for n in e.implementations})
-)
+ALL_ROWS = [*own_work.EXERCISES.values(), *own_work.VALUE_EXERCISES.values()]
+
+
+@pytest.mark.parametrize("dotted", sorted({n for e in ALL_ROWS for n in e.implementations}))
 def test_every_implementation_starts_with_its_own_guard(dotted):
     module_name, name = dotted.rsplit(".", 1)
     func = getattr(importlib.import_module(module_name), name)
@@ -342,3 +343,211 @@ def test_the_homework_text_states_the_rule_and_what_each_function_may_use(hw):
             for name in exercise.implementations:
                 if not name.rsplit(".", 1)[1].startswith("_"):
                     assert f"`{name}`" in text
+
+
+# ------------------------------------------------------------------ value questions
+def _notebook_namespace(hw: str) -> dict:
+    """The globals of a homework notebook after its Preparations cell."""
+    ns: dict = {"__name__": f"{hw}_own_work"}
+    exec(f"from course_lib.checks import check, check_all\nHOMEWORK = {hw!r}\n", ns)
+    return ns
+
+
+@pytest.mark.parametrize(
+    "qid, dotted",
+    sorted((q, n) for q, e in own_work.VALUE_EXERCISES.items() for n in e.implementations),
+)
+def test_a_value_question_s_library_call_raises_in_its_homework(qid, dotted):
+    """``answer_q1 = bezier_points_from_g1(D, knots)[3]`` in hw03 raises, in a cell, in a
+    function of the notebook and through exec; the same call in another homework does not."""
+    hw = qid.split(".")[0]
+    module_name, name = dotted.rsplit(".", 1)
+    ns = _notebook_namespace(hw)
+    ns["impl"] = impl = getattr(importlib.import_module(module_name), name)
+    required = [
+        p
+        for p in inspect.signature(impl).parameters.values()
+        if p.default is p.empty and p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)
+    ]
+    call = f"impl({', '.join(['None'] * len(required))})"
+    for source in (
+        call,
+        f"def helper():\n    return {call}\nhelper()",
+        f"exec({call!r}, {{'impl': impl}})",
+    ):
+        with pytest.raises(own_work.ExerciseError) as info:
+            exec(source, ns)
+        assert str(info.value).startswith(f"{dotted} is the exercise of ")
+        assert qid in str(info.value) and str(info.value).endswith(": write it yourself")
+    other = _notebook_namespace("hw00")
+    other["impl"] = ns["impl"]
+    with pytest.raises(Exception) as info:  # the library's own complaint about None, no guard
+        exec(call, other)
+    assert not isinstance(info.value, own_work.ExerciseError)
+
+
+# ------------------------------------------------------------------ a tracer around the checks
+RIGHT_TEXT = {"hw02.q4": "4*beta1*beta3 + 3*beta2**2", "hw03.q6": "3*(p4 - p2)/(t2 - t0)"}
+
+
+def _value_questions():
+    return [
+        (hw, qid)
+        for hw in HOMEWORKS
+        for qid in questions(hw)
+        if registry()[qid].answer_name.startswith("answer_")
+    ]
+
+
+def _numbers(obj, out: list, depth: int = 0) -> None:
+    """Every float inside ``obj`` (numbers, arrays, containers, a few levels deep)."""
+    if depth > 4:
+        return
+    if isinstance(obj, (bool, np.bool_)):
+        return
+    if isinstance(obj, (int, float, np.integer, np.floating)):
+        out.append(float(obj))
+    elif isinstance(obj, np.ndarray) and obj.dtype.kind in "if" and obj.size < 10_000:
+        out.extend(float(x) for x in obj.ravel())
+    elif isinstance(obj, (list, tuple)):
+        for x in obj[:1000]:
+            _numbers(x, out, depth + 1)
+    elif isinstance(obj, dict):
+        for x in list(obj.values())[:1000]:
+            _numbers(x, out, depth + 1)
+
+
+class Spy:
+    """A generic tracer (sys.settrace and sys.setprofile): every local and return value seen."""
+
+    def __init__(self) -> None:
+        self.seen: list[float] = []
+
+    def __call__(self, frame, event, arg):
+        for value in list(frame.f_locals.values()):
+            _numbers(value, self.seen)
+        if event == "return":
+            _numbers(arg, self.seen)
+        return self
+
+
+def _expected_numbers(hw: str, qid: str) -> list[float]:
+    """The components of the right answer that are not already numbers of the question's data."""
+    data = variants.data(hw, variants.DEFAULT)
+    name = registry()[qid].answer_name
+    right = HIDDEN[hw].answers_for(data)[name]
+    if isinstance(right, str):
+        return []  # a letter or a text: multiple choice (0 points) or symbolic (digests)
+    got: list[float] = []
+    _numbers(right, got)
+    given: list[float] = []
+    _numbers(data, given)
+    return [
+        x for x in got if x == x and not any(abs(x - g) <= 1e-9 * max(1, abs(x)) for g in given)
+    ]
+
+
+def _wrong_answer(hw: str, qid: str):
+    data = variants.data(hw, variants.DEFAULT)
+    right = HIDDEN[hw].answers_for(data)[registry()[qid].answer_name]
+    if qid in RIGHT_TEXT:
+        return "beta1 + t0"  # a symbolic answer of the wrong kind
+    if isinstance(right, str):
+        return "a"
+    if isinstance(right, dict):
+        return [np.full(np.shape(v), 0.123) for _, v in sorted(right.items())]
+    return np.full(np.shape(right), 0.123) if np.ndim(right) else 0.123
+
+
+@pytest.mark.parametrize("kind", ["settrace", "setprofile"])
+@pytest.mark.parametrize("hw, qid", _value_questions())
+def test_a_tracer_around_the_check_recovers_no_expected_value(hw, qid, kind):
+    import sys
+
+    spy = Spy()
+    wrong = _wrong_answer(hw, qid)  # made before the tracer: it holds the right answer's shape
+    install = sys.settrace if kind == "settrace" else sys.setprofile
+    install(spy)
+    try:
+        verdict = check(qid, wrong)
+    finally:
+        install(None)
+    assert not verdict.passed and "do not run under a tracer" in verdict.message
+    for x in _expected_numbers(hw, qid):
+        assert not any(abs(x - s) <= 1e-9 * max(1.0, abs(x)) for s in spy.seen), (qid, x)
+
+
+def test_the_tracer_test_can_fail(monkeypatch):
+    """Without the refusal the same tracer finds hw01.q7's arc length among the check's locals."""
+    import sys
+
+    monkeypatch.setattr("course_lib.checks._core._gettrace", lambda: None)
+    spy = Spy()
+    sys.settrace(spy)
+    try:
+        check("hw01.q7", 0.123)
+    finally:
+        sys.settrace(None)
+    (x,) = _expected_numbers("hw01", "hw01.q7")
+    assert any(abs(x - s) <= 1e-9 * abs(x) for s in spy.seen)
+
+
+@pytest.mark.parametrize("qid", ["hw03.q7", "hw05.q5"])
+def test_a_function_that_leaves_a_tracer_behind_is_refused(qid):
+    import sys
+
+    def answer(*args):
+        sys.settrace(Spy())
+        return np.zeros(3)
+
+    try:
+        verdict = check(qid, answer)
+    finally:
+        sys.settrace(None)
+    assert not verdict.passed and "do not run under a tracer" in verdict.message
+
+
+def test_no_check_module_has_a_helper_that_computes_an_answer():
+    """The helpers the issue found (and their kind) are gone from the checks modules."""
+    import course_lib.checks.hw01 as h1
+    import course_lib.checks.hw02 as h2
+    import course_lib.checks.hw03 as h3
+    import course_lib.checks.hw05 as h5
+
+    for module, name in [
+        (h1, "_parabola_length"),
+        (h1, "_parabola_derivatives"),
+        (h1, "_c1_derivative"),
+        (h2, "_chain_rule_coefficient"),
+        (h2, "_values_of"),
+        (h5, "_quad_end_curvatures"),
+        (h5, "_bspline_polygons"),
+        (h3, "bezier_points_from_g1"),
+    ]:
+        assert not hasattr(module, name), name
+
+
+@pytest.mark.parametrize(
+    "qid, text, digest_name",
+    [
+        ("hw02.q4", "4*beta1*beta3 + 3*beta2**2", "_Q4_RIGHT"),
+        ("hw02.q4", "4*beta1*beta2 + 3*beta2**2", "_Q4_TRANSCRIBED"),
+        ("hw03.q6", "3*(p4 - p2)/(t2 - t0)", "_Q6_RIGHT"),
+        ("hw03.q6", "3*(t1 - t0)*(p4 - p2)/(t2 - t0)", "_Q6_LOCAL"),
+    ],
+)
+def test_symbolic_digests_are_the_hand_derived_expressions_away_from_rounding(
+    qid, text, digest_name
+):
+    from course_lib import answers
+    from course_lib.checks import values_digest
+
+    module = importlib.import_module(f"course_lib.checks.{qid.split('.')[0]}")
+    q = qid.split(".")[1].upper()
+    symbols, points = getattr(module, f"_{q}_SYMBOLS"), getattr(module, f"_{q}_POINTS")
+    _, values = answers.evaluate(text, symbols, points, "x")
+    assert values_digest(qid, values) == getattr(module, digest_name)
+    for v in values:  # at least 1e-3 of the 10th digit away from a rounding boundary
+        mantissa = abs(complex(v).real) / 10 ** np.floor(np.log10(abs(complex(v).real)))
+        frac = (mantissa * 1e9) % 1
+        assert abs(frac - 0.5) > 1e-3
