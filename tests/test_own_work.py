@@ -551,3 +551,55 @@ def test_symbolic_digests_are_the_hand_derived_expressions_away_from_rounding(
         mantissa = abs(complex(v).real) / 10 ** np.floor(np.log10(abs(complex(v).real)))
         frac = (mantissa * 1e9) % 1
         assert abs(frac - 0.5) > 1e-3
+
+
+# ------------------------------------------------------------------ feedback and hidden cases
+def _case_numbers(module) -> set[float]:
+    """Every number of a hidden-test file's case lists (``Q2_CASES``, ...), except 0..10."""
+    from fractions import Fraction
+
+    out: list[float] = []
+
+    def walk(obj):
+        if isinstance(obj, (list, tuple)):
+            for x in obj:
+                walk(x)
+        elif isinstance(obj, np.ndarray):
+            out.extend(float(x) for x in obj.ravel())
+        elif isinstance(obj, (int, float, Fraction)) and not isinstance(obj, bool):
+            out.append(float(obj))
+
+    for name in dir(module):
+        if name.endswith("_CASES"):
+            walk(getattr(module, name))
+    return {x for x in out if not (x == int(x) and 0 <= x <= 10)}
+
+
+@pytest.mark.parametrize("qid", sorted(own_work.EXERCISES))
+def test_feedback_names_no_hidden_input(qid):
+    """Wrong functions (the typical mistakes of test_answer_equivalence, and a constant) get notes
+    that describe the kind of case, never its inputs or its expected value."""
+    import re
+
+    from test_answer_equivalence import TABLE
+
+    hw = qid.split(".")[0]
+    name = own_work.EXERCISES[qid].answer_name
+    numbers = _case_numbers(HIDDEN[hw])
+
+    def constant(*args):
+        return np.zeros_like(np.asarray(args[0], dtype=float))
+
+    notes = []
+    for wrong in [*TABLE[qid][1], constant]:
+        if callable(wrong):
+            fraction, note = _grade(qid, {name: wrong})
+            if fraction < 1:
+                notes.append(note)
+    assert notes
+    for note in notes:
+        note = re.sub(r"(shape|to) \([\d, ]*\)", "", note)  # an array's shape is a kind of case
+        assert not re.search(r"[\(\[]\s*-?\d", note), note  # no point, vector or knot list
+        assert not re.search(r"=\s*-?\d", note), note  # no "β1 = 0.7"
+        for x in numbers:
+            assert f"{x:g}" not in note and repr(x) not in note, (note, x)

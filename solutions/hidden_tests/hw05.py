@@ -46,16 +46,26 @@ DATA = {"corner_deg": 2.0, "g2_rtol": 1e-8}
 #: The base decides the answer: rotating and scaling keep (non-)parallel chords.
 Q2_CASES = [
     # DejaVu Serif 'o', counter, lower right implied point: a G1 joint in font units
-    ([(616, 70), (764, 70), (915, 304), (915, 532)], 0.0, 1.0),
+    ([(616, 70), (764, 70), (915, 304), (915, 532)], 0.0, 1.0, "a point in font units"),
     # DejaVu Serif 'o', top of the outer ring (616, 1092) as a midpoint joint: symmetric, G2
-    ([(242.5, 939), (383, 1092), (849, 1092), (989.5, 939)], 0.0, 1.0),
-    ([(242.5, 939), (383, 1092), (849, 1092), (989.5, 939)], math.pi / 4, 1 / 2048),
+    ([(242.5, 939), (383, 1092), (849, 1092), (989.5, 939)], 0.0, 1.0, "a point in font units"),
+    (
+        [(242.5, 939), (383, 1092), (849, 1092), (989.5, 939)],
+        math.pi / 4,
+        1 / 2048,
+        "a rotated glyph in em units",
+    ),
     # DejaVu Serif 'D', G1, at a millionth of an em: only a relative test keeps it G1
-    ([(692, 106), (983, 106), (1294, 438), (1294, 748)], 0.3, 1e-8),
+    ([(692, 106), (983, 106), (1294, 438), (1294, 748)], 0.3, 1e-8, "a very small glyph"),
     # chord against the leg: parallel all the same
-    ([(0, 0), (2, 1), (5, 1), (-4, 0)], 1.0, 1.0),
+    ([(0, 0), (2, 1), (5, 1), (-4, 0)], 1.0, 1.0, "a chord pointing against the leg"),
     # leg tilted by a millionth: far above the 1e-9 tolerance
-    ([(0, 0), (1, 1), (2, Fraction(1) + Fraction(1, 10**6)), (3, 0)], 0.0, 1.0),
+    (
+        [(0, 0), (1, 1), (2, Fraction(1) + Fraction(1, 10**6)), (3, 0)],
+        0.0,
+        1.0,
+        "a leg and a chord almost parallel",
+    ),
 ]
 
 #: g2_run cases: the bowls of other glyphs (font units) and short runs.
@@ -159,13 +169,13 @@ def _rotated(points, angle, scale):
 def q2(student, data):
     func = student.function("implied_is_g2")
 
-    def case(points, angle, scale):
+    def case(points, angle, scale, kind):
         def run():
             # exact: G2 iff (B - A) x (P2 - P0) == 0 in rationals (lecture 06, §2)
             P0, A, B, P2 = ([Fraction(v) for v in p] for p in points)
             expected = _cross((B[0] - A[0], B[1] - A[1]), (P2[0] - P0[0], P2[1] - P0[1])) == 0
             got = answers.boolean(func(*_rotated(points, angle, scale)), "implied_is_g2's result")
-            assert got == expected, f"wrong for a {'G2' if expected else 'G1'} implied point"
+            assert got == expected, f"wrong for {kind}"
 
         return run
 
@@ -222,7 +232,8 @@ def q5(student, data):
             got = answers.array(
                 func(V.copy()), (n, 4, 2), "g2_run's result", "n cubic Bézier polygons"
             )
-            assert answers.close(got, _by_hand(V)), f"wrong for a run of {n + 1} points"
+            kind = {1: "a straight run", 2: "a run of a single quadratic"}.get(n, "a long run")
+            assert answers.close(got, _by_hand(V)), f"wrong for {kind}"
 
         return run
 
