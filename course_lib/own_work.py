@@ -313,7 +313,7 @@ def _value_guards() -> dict[tuple[str, str], str]:
     for q, e in VALUE_EXERCISES.items():
         for name in e.implementations:
             out.setdefault((q.split(".")[0], name), []).append(q)
-    return {k: " and ".join(v) for k, v in out.items()}
+    return {k: v[0] if len(v) == 1 else f"{', '.join(v[:-1])} and {v[-1]}" for k, v in out.items()}
 
 
 _VALUE_GUARDS = _value_guards()

@@ -36,10 +36,10 @@ SAME_FOR_ALL = {
     "hw05": {"q2": 3, "q5": 4},
 }
 #: full marks (multiple choice is feedback only: 0 points)
-FULL = {"hw01": 11, "hw02": 10, "hw03": 15, "hw04": 11, "hw05": 12}
-#: how many questions worth points at least differ between Ada's and Sophie's data (hw05: the
-#: glyphs of one font share q1 and q6, only q3 differs for sure)
-DIFFER = {"hw05": 1}
+FULL = {"hw01": 11, "hw02": 10, "hw03": 15, "hw04": 11, "hw05": 7}
+#: how many questions worth points at least differ between Ada's and Sophie's data (3 unless
+#: named here)
+DIFFER: dict[str, int] = {}
 
 
 grade = load("grade_variants", ROOT / "tools" / "grade.py")
@@ -96,6 +96,12 @@ def test_each_student_is_graded_on_their_own_variant(graded):
 
 def test_a_friends_code_does_not_earn_full_marks(graded):
     hw, row = graded["hw"], graded["rows"]["s003"]
+    if hw == "hw05":
+        # issue 24: hw05's values are classify_joints one-liners, worth 0 points, so its points
+        # are its two functions, the same for everyone: a friend's notebook earns them all until
+        # they get per-student specifications (README, "The rule")
+        assert float(row["total"]) == FULL[hw] == sum(SAME_FOR_ALL[hw].values())
+        return
     assert float(row["total"]) < FULL[hw]
     # the data questions are answered for Ada's data, not Sophie's; the function question (and
     # hw02's symbolic one) is the same for everyone

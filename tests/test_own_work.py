@@ -301,6 +301,11 @@ def test_a_lazy_notebook_graded_in_the_sandbox(tmp_path):
             if cell.cell_type == "code" and cell.source.lstrip().startswith(f"def {name}("):
                 cell.source = source
     assert sum(c.source in LAZY_CELLS.values() for c in nb.cells) == 2
+    (q1,) = [c for c in nb.cells if c.cell_type == "code" and c.source.startswith("t0, t1, t2 =")]
+    q1.source = (  # a value question's one-liner: the cell raises in the kernel
+        "from course_lib.knot_splines import bezier_points_from_g1\n"
+        'answer_q1 = bezier_points_from_g1(D, DATA["q3"]["knots"]["a"])[3]\n'
+    )
     subs = tmp_path / "subs"
     subs.mkdir()
     nbformat.write(nb, subs / "lazy.ipynb")
@@ -320,8 +325,14 @@ def test_a_lazy_notebook_graded_in_the_sandbox(tmp_path):
     assert code == 0
     (row,) = json.loads((out / "results.json").read_text(encoding="utf-8"))["results"]
     points = row["points"]
-    assert points["q2"] == 0 and points["q7"] == 0
-    assert all(points[q] == p for q, p in HIDDEN["hw03"].POINTS.items() if q not in ("q2", "q7"))
+    assert points["q1"] == points["q2"] == points["q7"] == 0
+    lazy = ("q1", "q2", "q7")
+    assert all(points[q] == p for q, p in HIDDEN["hw03"].POINTS.items() if q not in lazy)
+    assert "`answer_q1` is not defined" in row["notes"]["q1"]
+    assert any(
+        "bezier_points_from_g1 is the exercise of hw03.q1, hw03.q3 and hw03.q5" in n
+        for n in row["run_notes"]
+    ), row["run_notes"]
     assert (
         "bezier_points_from_g1 is the exercise of hw03.q2: write it yourself" in row["notes"]["q2"]
     )
@@ -603,3 +614,61 @@ def test_feedback_names_no_hidden_input(qid):
         assert not re.search(r"=\s*-?\d", note), note  # no "β1 = 0.7"
         for x in numbers:
             assert f"{x:g}" not in note and repr(x) not in note, (note, x)
+
+
+# ------------------------------------------------------------------ one-liners, and the README
+#: Questions with points that no course_lib function computes (nothing to guard).
+NO_LIBRARY_ROUTE = {
+    "hw03.q6": "the closed form of the left derivative: no function of course_lib is symbolic here",
+    "hw05.q5": "the phantom vertices: cubic_beta_spline is allowed, the ends are the exercise",
+}
+
+
+def _readme_open_to_one_liners() -> set[str]:
+    import re
+
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    start = text.index("Open to a **one-liner**")
+    part = " ".join(text[start : text.index("worth **0 points**", start)].split())
+    listed, hw = set(), None
+    for token in re.findall(r"hw\d\d|q\d", part):
+        if token.startswith("hw"):
+            hw = token
+        else:
+            listed.add(f"{hw}.{token}")
+    return listed
+
+
+def test_the_readme_lists_exactly_the_questions_open_to_one_liners():
+    listed = _readme_open_to_one_liners()
+    zero = {f"{hw}.{q}" for hw in HOMEWORKS for q, p in HIDDEN[hw].POINTS.items() if p == 0}
+    assert listed == zero
+
+
+@pytest.mark.parametrize("hw", HOMEWORKS)
+def test_one_liners_score_only_the_open_points(hw):
+    """A submission made only of library calls and the right answers of the open questions."""
+    points, listed = HIDDEN[hw].POINTS, _readme_open_to_one_liners()
+    right = HIDDEN[hw].answers_for(variants.data(hw, variants.DEFAULT))
+    ns = _notebook_namespace(hw)
+    for q in points:
+        qid = f"{hw}.{q}"
+        name = registry()[qid].answer_name
+        if qid in listed:
+            ns[name] = right[name]  # a one-liner finds it: it is worth nothing
+        elif qid in LAZY:
+            ns[name] = _lazy(qid, "direct")
+        elif qid in own_work.VALUE_EXERCISES:
+            for dotted in own_work.VALUE_EXERCISES[qid].implementations:
+                module_name, attr = dotted.rsplit(".", 1)
+                ns["impl"] = impl = getattr(importlib.import_module(module_name), attr)
+                n = sum(
+                    p.default is p.empty and p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)
+                    for p in inspect.signature(impl).parameters.values()
+                )
+                with pytest.raises(own_work.ExerciseError):
+                    exec(f"{name} = impl({', '.join(['None'] * n)})", ns)
+        else:
+            assert qid in NO_LIBRARY_ROUTE, f"{qid}: how would a one-liner answer it?"
+    earned = sum(p * _grade(f"{hw}.{q}", ns)[0] for q, p in points.items())
+    assert earned <= sum(p for q, p in points.items() if f"{hw}.{q}" in listed) == 0

@@ -63,7 +63,7 @@ glyph = glyph_outline(DATA["glyph"]["char"], DATA["glyph"]["font"])
 print(DATA["glyph"]["text"])  # your data
 
 # %% [markdown]
-# ## Question 1 — classify the joints of your glyph (compute)
+# ## Question 1 — classify the joints of your glyph (compute; practice: 0 points)
 #
 # Your glyph has two contours: the outer one (stem and bowl) and the counter inside the bowl. With
 # the lecture's tolerances (the defaults of `classify_joints`: a **corner** where the tangent
@@ -116,7 +116,7 @@ def implied_is_g2(P0, A, B, P2):
 check("hw05.q2", implied_is_g2)
 
 # %% [markdown]
-# ## Question 3 — the curvature jump at one implied point (compute)
+# ## Question 3 — the curvature jump at one implied point (compute; practice: 0 points)
 #
 # On the bowl of your glyph, the outer contour has four consecutive stored points (font units,
 # printed below): $P_0$ (on-curve), $A$, $B$ (off-curve) and the next on-curve point $P_2$; between
@@ -225,7 +225,7 @@ def g2_run(V):
 check("hw05.q5", g2_run)
 
 # %% [markdown]
-# ## Question 6 — your glyph made G2, corners kept (compute)
+# ## Question 6 — your glyph made G2, corners kept (compute; practice: 0 points)
 #
 # The outer contour of your glyph runs round the bowl from the corner where the bowl leaves the
 # stem to the corner where it meets the stem again, then along straight lines round the stem
