@@ -672,3 +672,28 @@ def test_one_liners_score_only_the_open_points(hw):
             assert qid in NO_LIBRARY_ROUTE, f"{qid}: how would a one-liner answer it?"
     earned = sum(p * _grade(f"{hw}.{q}", ns)[0] for q, p in points.items())
     assert earned <= sum(p for q, p in points.items() if f"{hw}.{q}" in listed) == 0
+
+
+# ------------------------------------------------------------------ a friend's notebook
+@pytest.mark.parametrize("hw", HOMEWORKS)
+def test_a_friends_notebook_scores_at_most_a_quarter(hw):
+    """The solution done with Ada's code, graded as Sophie's (her data): at most 25 % of the
+    points -- the data questions are Ada's numbers, and the questions that are the same for
+    everyone earn nothing in a notebook not done on one's own data."""
+    home = VariantHomework(hw)
+    points = home.hidden.POINTS
+    for ada, sophie in [(home.codes[0], home.codes[1]), (home.codes[2], home.codes[3])]:
+        ns = home.solution_namespace(ada)
+        data = variants.data(hw, sophie)
+        notes = {}
+        earned = 0.0
+        for q, p in points.items():
+            fraction, notes[q] = home.grade(q, ns, data)
+            earned += fraction * p
+        assert earned <= 0.25 * sum(points.values()), (hw, earned, notes)
+        for qid in own_work.EXERCISES:
+            if qid.startswith(hw):
+                assert "not done on your own data" in notes[qid.split(".")[1]]
+        # and on her own data the same notebook would have earned everything
+        assert all(home.grade(q, ns, variants.data(hw, ada))[0] == 1.0 for q in points)
+    variants.data(hw, variants.DEFAULT)

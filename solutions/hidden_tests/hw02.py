@@ -134,6 +134,7 @@ def q2(student, data):
 
 
 def q3(student, data):
+    answers.require_own_data(lambda: student["DATA"], data, HOMEWORK)  # no copied notebook
     func = student.function("is_g1")
 
     def case(q, r, expected, kind):
@@ -147,6 +148,7 @@ def q3(student, data):
 
 
 def q4(student, data):
+    answers.require_own_data(lambda: student["DATA"], data, HOMEWORK)  # no copied notebook
     # d⁴/dt⁴ q(u(t)): the q''-terms are 4 u' u''' + 3 u''² (Faà di Bruno, partitions of 4
     # into two blocks: 4 of type {1,3}, 3 of type {2,2}) -> 4 β1 β3 + 3 β2²
     free, values = student.expression("answer_q4", Q4_SYMBOLS, Q4_POINTS)

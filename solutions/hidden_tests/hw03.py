@@ -127,6 +127,7 @@ def q1(student, data):
 
 
 def q2(student, data):
+    answers.require_own_data(lambda: student["DATA"], data, HOMEWORK)  # no copied notebook
     func = student.function("g1_bezier_control_points")
     return answers.partial_credit(
         [
@@ -162,6 +163,7 @@ def q5(student, data):
 
 
 def q6(student, data):
+    answers.require_own_data(lambda: student["DATA"], data, HOMEWORK)  # no copied notebook
     # 3 (p3 - p2)/(t1 - t0) with p3 - p2 = (t1 - t0)/(t2 - t0) (p4 - p2)  ->  3 (p4 - p2)/(t2 - t0)
     free, values = student.expression("answer_q6", Q6_SYMBOLS, Q6_POINTS)
     t0, t2, p2, p4 = Q6_POINTS[:, 0], Q6_POINTS[:, 2], Q6_POINTS[:, 3], Q6_POINTS[:, 4]
@@ -172,6 +174,7 @@ def q6(student, data):
 
 
 def q7(student, data):
+    answers.require_own_data(lambda: student["DATA"], data, HOMEWORK)  # no copied notebook
     func = student.function("knot_ratio_beta1")
 
     def case(knots, expected, kind):

@@ -101,6 +101,7 @@ def q1(student, data):
 
 
 def q2(student, data):
+    answers.require_own_data(lambda: student["DATA"], data, HOMEWORK)  # no copied notebook
     func = student.function("g2_stitch")
 
     def case(V, b1, b2):
@@ -130,6 +131,7 @@ def q3(student, data):
 
 
 def q4(student, data):
+    answers.require_own_data(lambda: student["DATA"], data, HOMEWORK)  # no copied notebook
     func = student.function("quadratic_beta_spline")
 
     def case(V, b):

@@ -170,6 +170,7 @@ def _rotated(points, angle, scale):
 
 
 def q2(student, data):
+    answers.require_own_data(lambda: student["DATA"], data, HOMEWORK)  # no copied notebook
     func = student.function("implied_is_g2")
 
     def case(points, angle, scale, kind):
@@ -226,6 +227,7 @@ def _by_hand(V):
 
 
 def q5(student, data):
+    answers.require_own_data(lambda: student["DATA"], data, HOMEWORK)  # no copied notebook
     func = student.function("g2_run")
 
     def case(points):
