@@ -1,4 +1,4 @@
-"""Points only for one's own work: the library does not do a homework's function exercises.
+"""Points only for one's own work: the library does not do a homework's exercises.
 
 Each function question of a homework (``hw03.q7``: write ``knot_ratio_beta1``) has
 implementations in ``course_lib`` -- the very function the exercise asks for, or one that does
@@ -292,19 +292,13 @@ VALUE_EXERCISES: Mapping[str, Exercise] = MappingProxyType({e.question: e for e 
 
 _getframe = sys._getframe
 _lock = threading.Lock()
-_ACTIVE: list[frozenset[str]] = []  # guarded names of every evaluation running in this process
+_ACTIVE: list[dict[str, str]] = []  # implementation -> question, per evaluation running here
 
 
-def _from_environment() -> frozenset[str]:
-    """Questions a parent process was evaluating when it started this one."""
-    names = set()
-    for qid in os.environ.get(ENV_VAR, "").split(","):
-        if qid in EXERCISES:
-            names.update(EXERCISES[qid].implementations)
-    return frozenset(names)
-
-
-_INHERITED = _from_environment()
+def _from_environment() -> dict[str, str]:
+    """Implementation -> question, for the questions a parent process was evaluating when it
+    started this one."""
+    return _guarded(tuple(os.environ.get(ENV_VAR, "").split(",")))
 
 
 def _value_guards() -> dict[tuple[str, str], str]:
@@ -335,21 +329,16 @@ def _owner(implementation: str, guarded: object) -> str | None:
     return None
 
 
-def _question_of(implementation: str) -> str:
-    for q, e in EXERCISES.items():
-        if implementation in e.implementations:
-            return q
-    return "a homework"
-
-
 def require(implementation: str) -> None:
-    """Raise :class:`ExerciseError` if ``implementation`` is an exercise being evaluated now.
+    """Raise :class:`ExerciseError` if ``implementation`` is an exercise being evaluated now,
+    or computes a value of the homework whose notebook calls it.
 
-    Called as the first statement of every implementation listed in :data:`EXERCISES`.
-    Outside an evaluation it costs a walk up the calling frames.
+    The first statement of every implementation listed in :data:`EXERCISES` and
+    :data:`VALUE_EXERCISES`.  Where neither the checks nor the probe are imported (benchmarks,
+    scripts) it returns at once; else it walks up the calling frames.
     """
     if implementation in _INHERITED:  # started by a process that was evaluating it
-        raise ExerciseError(exercise_message(implementation, _question_of(implementation)))
+        raise ExerciseError(exercise_message(implementation, _INHERITED[implementation]))
     modules = sys.modules
     if not (_ACTIVE or "course_lib._probe" in modules or "course_lib.checks" in modules):
         return  # no evaluation can be running (benchmarks, plain library use): no frame walk
@@ -360,8 +349,9 @@ def require(implementation: str) -> None:
             if question is not None:
                 raise ExerciseError(exercise_message(implementation, question))
         frame = frame.f_back
-    if any(implementation in names for names in list(_ACTIVE)):
-        raise ExerciseError(exercise_message(implementation, _question_of(implementation)))
+    for guarded in list(_ACTIVE):  # an evaluation on another thread of this process
+        if implementation in guarded:
+            raise ExerciseError(exercise_message(implementation, guarded[implementation]))
     if "course_lib.checks" in modules:  # a homework's Preparations cell imports the checks
         frame = _getframe(1)
         while frame is not None:
@@ -383,6 +373,9 @@ def _guarded(questions: tuple[str, ...]) -> dict[str, str]:
     return out
 
 
+_INHERITED = _from_environment()
+
+
 def run_exercise(
     questions: tuple[str, ...], func: Callable[..., Any], /, *args: Any, **kwargs: Any
 ) -> Any:
@@ -393,17 +386,17 @@ def run_exercise(
     afterwards, whatever happens.
     """
     guarded = _guarded(tuple(questions))  # read by require() in this frame's locals
-    names = frozenset(guarded)
+    entry = dict(guarded)
     previous = os.environ.get(ENV_VAR)
     with _lock:
-        _ACTIVE.append(names)
+        _ACTIVE.append(entry)
     os.environ[ENV_VAR] = ",".join(sorted(set(questions)))
     try:
         return func(*args, **kwargs)
     finally:
         with _lock:
             try:
-                _ACTIVE.remove(names)
+                _ACTIVE.remove(entry)
             except ValueError:  # a notebook emptied the list: nothing to restore
                 pass
         if previous is None:
