@@ -32,9 +32,13 @@ globals hold ``HOMEWORK = "hwNN"`` -- any frame up the stack: a cell, a function
 notebook, ``exec`` from a cell -- raises if it computes a value question of ``hwNN``.  Lectures
 and the library's own users are untouched (they set no ``HOMEWORK``).
 
-What it does not stop (README, "How grading is protected"): code in the same interpreter can
-always rewrite code in it -- a notebook that replaces :func:`require`'s code, this module's
-globals, the probe or ``__import__`` before the evaluation can call the library unguarded, and
+Before an evaluation, :func:`run_exercise` refuses (:class:`ExerciseError`, the question costs
+its points) if a notebook switched the guard off by rebinding a name: ``own_work.require``, a
+module's ``own_work``, a guarded function's ``__code__``.
+
+What it does not stop (README, "The rule"): code in the same interpreter can always rewrite code
+in it -- a notebook that replaces the probe, ``__import__`` or this module's own references
+before the evaluation can call the library unguarded, and
 one that hides ``HOMEWORK`` (or computes in a thread) while it computes a value;
 copying a function's source text out of ``course_lib`` is copying, as from a book.
 """
@@ -376,6 +380,37 @@ def _guarded(questions: tuple[str, ...]) -> dict[str, str]:
 _INHERITED = _from_environment()
 
 
+def _intact(dotted: str) -> bool:
+    """Is ``dotted`` still the library's function, starting with its guard?"""
+    module_name, name = dotted.rsplit(".", 1)
+    module = sys.modules.get(module_name)
+    if module is None:  # not imported yet: imported from its file, so as shipped
+        return True
+    if getattr(module, "own_work", None) is not sys.modules.get(__name__):
+        return False
+    func = getattr(module, name, None)
+    code = getattr(func, "__code__", None)
+    return code is None or (dotted in code.co_consts and "require" in code.co_names)
+
+
+def _check_intact(guarded: Mapping[str, str]) -> None:
+    """Refuse to evaluate an exercise whose guard a notebook switched off by rebinding a name
+    (``own_work.require = ...``, ``knot_splines.own_work = ...``, a function's ``__code__``)."""
+    me = sys.modules.get(__name__)
+    switched_off = (
+        me is None
+        or getattr(me, "require", None) is not _REQUIRE
+        or _REQUIRE.__code__ is not _REQUIRE_CODE
+        or getattr(me, "_getframe", None) is not _GETFRAME
+    )
+    for dotted, question in guarded.items():
+        if switched_off or not _intact(dotted):
+            raise ExerciseError(
+                f"the guard of {question} was switched off in this kernel ({dotted}): write it "
+                "yourself"
+            )
+
+
 def run_exercise(
     questions: tuple[str, ...], func: Callable[..., Any], /, *args: Any, **kwargs: Any
 ) -> Any:
@@ -386,6 +421,7 @@ def run_exercise(
     afterwards, whatever happens.
     """
     guarded = _guarded(tuple(questions))  # read by require() in this frame's locals
+    _check_intact(guarded)
     entry = dict(guarded)
     previous = os.environ.get(ENV_VAR)
     with _lock:
@@ -406,3 +442,4 @@ def run_exercise(
 
 
 _RUN_CODE = run_exercise.__code__
+_REQUIRE, _REQUIRE_CODE, _GETFRAME = require, require.__code__, sys._getframe

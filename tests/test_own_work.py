@@ -697,3 +697,26 @@ def test_a_friends_notebook_scores_at_most_a_quarter(hw):
         # and on her own data the same notebook would have earned everything
         assert all(home.grade(q, ns, variants.data(hw, ada))[0] == 1.0 for q in points)
     variants.data(hw, variants.DEFAULT)
+
+
+@pytest.mark.parametrize("how", ["require", "module", "code"])
+def test_a_guard_switched_off_by_rebinding_costs_the_question(how, monkeypatch):
+    """The obvious ways to switch the guard off before the check, each one assignment."""
+    from course_lib import knot_splines
+
+    if how == "require":
+        monkeypatch.setattr(own_work, "require", lambda *a: None)
+    elif how == "module":
+        monkeypatch.setattr(knot_splines, "own_work", type("Fake", (), {"require": print}))
+    else:
+
+        def unguarded(knots):
+            h = np.diff(np.asarray(knots, dtype=float))
+            return h[1:] / h[:-1]
+
+        monkeypatch.setattr(knot_splines.knot_ratio_beta1, "__code__", unguarded.__code__)
+    answer = knot_splines.knot_ratio_beta1
+    verdict = check("hw03.q7", answer)
+    assert not verdict.passed and "guard of hw03.q7 was switched off" in verdict.message
+    fraction, note = _grade("hw03.q7", {"knot_ratio_beta1": answer})
+    assert fraction == 0 and "guard of hw03.q7 was switched off" in note
