@@ -315,6 +315,10 @@ def _value_guards() -> dict[tuple[str, str], str]:
 
 
 _VALUE_GUARDS = _value_guards()
+#: implementation -> the homeworks with a value question it computes
+_VALUE_HOMEWORKS: dict[str, frozenset[str]] = {}
+for _hw, _name in _VALUE_GUARDS:
+    _VALUE_HOMEWORKS[_name] = _VALUE_HOMEWORKS.get(_name, frozenset()) | {_hw}
 
 
 def questions_of(answer_name: object) -> tuple[str, ...]:
@@ -346,25 +350,27 @@ def require(implementation: str) -> None:
     modules = sys.modules
     if not (_ACTIVE or "course_lib._probe" in modules or "course_lib.checks" in modules):
         return  # no evaluation can be running (benchmarks, plain library use): no frame walk
+    # one walk up the stack: an evaluation's frame (run_exercise) names the question first;
+    # else a frame whose globals are a homework notebook's (HOMEWORK) names its value questions
+    homeworks = _VALUE_HOMEWORKS.get(implementation) if "course_lib.checks" in modules else None
+    value_question, seen = None, None
     frame = _getframe(1)
     while frame is not None:
         if frame.f_code is _RUN_CODE:
             question = _owner(implementation, frame.f_locals.get("guarded"))
             if question is not None:
                 raise ExerciseError(exercise_message(implementation, question))
+        if homeworks and value_question is None and frame.f_globals is not seen:
+            seen = frame.f_globals  # consecutive frames of one module share their globals
+            homework = seen.get("HOMEWORK")
+            if isinstance(homework, str) and homework in homeworks:
+                value_question = _VALUE_GUARDS[(homework, implementation)]
         frame = frame.f_back
     for guarded in list(_ACTIVE):  # an evaluation on another thread of this process
         if implementation in guarded:
             raise ExerciseError(exercise_message(implementation, guarded[implementation]))
-    if "course_lib.checks" in modules:  # a homework's Preparations cell imports the checks
-        frame = _getframe(1)
-        while frame is not None:
-            homework = frame.f_globals.get("HOMEWORK")
-            if isinstance(homework, str):
-                questions = _VALUE_GUARDS.get((homework, implementation))
-                if questions:
-                    raise ExerciseError(exercise_message(implementation, questions))
-            frame = frame.f_back
+    if value_question is not None:
+        raise ExerciseError(exercise_message(implementation, value_question))
 
 
 def _guarded(questions: tuple[str, ...]) -> dict[str, str]:
