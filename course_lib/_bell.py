@@ -22,6 +22,8 @@ from math import comb
 
 import numpy as np
 
+from . import own_work
+
 __all__ = ["MAX_CHAIN_RULE_ORDER", "bell_table", "check_chain_rule_order", "compose_derivatives"]
 
 #: Highest derivative order pushed through the chain rule (Faà di Bruno, arc-length
@@ -112,6 +114,7 @@ def compose_derivatives(outer: np.ndarray, inner: np.ndarray) -> np.ndarray:
     ndarray of shape (n, *S, *V)
         Row ``i - 1`` is ``(g o f)^{(i)}(t)``.
     """
+    own_work.require("course_lib._bell.compose_derivatives")
     outer = np.asarray(outer, dtype=float)
     inner = np.asarray(inner, dtype=float)
     n = inner.shape[0]

@@ -46,6 +46,7 @@ from math import comb
 
 import numpy as np
 
+from . import own_work
 from .bezier import _bernstein
 
 __all__ = [
@@ -209,6 +210,7 @@ def hodograph_lengths(H: np.ndarray, arr: np.ndarray | None = None) -> np.ndarra
     """Lengths ``int_0^1 |d sum_i B^{d-1}_i(u) H_i| du`` of Bézier segments given by their
     control-point differences ``H`` (``(S, d, dim)``, ``d >= 1``); ``arr``, the points,
     only if ``H`` may have overflowed."""
+    own_work.require("course_lib._bezier_length.hodograph_lengths")
     if H.shape[1] == 1:
         none = np.zeros(H.shape[0], dtype=bool)
         return _finish(H, np.zeros(H.shape[0]), none, none, arr)
@@ -222,6 +224,7 @@ def segment_lengths(arr: np.ndarray) -> np.ndarray:
     ``arr`` must be finite (a :class:`~course_lib.curve.PiecewiseBezier` guarantees it);
     no other checks.  Relative accuracy about 1e-13 or better (see the module notes).
     """
+    own_work.require("course_lib._bezier_length.segment_lengths")
     if arr.shape[1] < 2:  # a point
         return np.zeros(arr.shape[0])
     with np.errstate(over="ignore", invalid="ignore"):
@@ -239,6 +242,7 @@ def piece_lengths(arr: np.ndarray, u0: np.ndarray, u1: np.ndarray) -> np.ndarray
     origin).  A whole segment (``u0 = 0``, ``u1 = 1``) gets its differences exactly, so
     its length is bit for bit the one :func:`segment_lengths` gives.
     """
+    own_work.require("course_lib._bezier_length.piece_lengths")
     n, p, _ = arr.shape
     if p < 2:
         return np.zeros(n)
@@ -265,6 +269,7 @@ def segment_length(P: np.ndarray) -> float:
     no product below can overflow and no ``np.errstate`` (about 1.5 µs) is needed;
     ``hypot`` keeps the norms exact at every scale.  Larger curves take the guarded path.
     """
+    own_work.require("course_lib._bezier_length.segment_length")
     d = P.shape[0] - 1
     if not np.vdot(P, P) < 1e280:
         return float(segment_lengths(P[None])[0])
@@ -326,6 +331,7 @@ def _critical_points(H: np.ndarray) -> np.ndarray:
 def robust_length(P: np.ndarray) -> float:
     """Length of one Bézier segment ``P`` (``(d + 1, dim)``, finite, any degree and scale)
     by the robust path alone (see :func:`robust_hodograph_length`)."""
+    own_work.require("course_lib._bezier_length.robust_length")
     if P.shape[0] < 2:
         return 0.0
     H, e = _scaled_differences(P[None])

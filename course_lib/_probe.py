@@ -35,6 +35,8 @@ from typing import Any
 
 import numpy as np
 
+from . import own_work
+
 MAX_ELEMENTS = 200_000
 MAX_DEPTH = 8
 MAX_STRING = 20_000
@@ -303,7 +305,9 @@ def handle(request: dict, namespace: dict) -> dict:
                 return _fail("unsupported", f"`{request['name']}` is not a function")
             args = decode_argument(request.get("args", []))
             kwargs = decode_argument({"__dict__": request.get("kwargs", {})})
-            result = value(*args, **kwargs)
+            # the library's implementations of this exercise raise while it runs (own_work)
+            questions = own_work.questions_of(request.get("name"))
+            result = own_work.run_exercise(questions, value, *args, **kwargs)
             return {"ok": True, "value": encode(result)}
         if op == "expr":
             symbols = [str(s) for s in request.get("symbols", [])]

@@ -431,3 +431,56 @@ def partial_credit(cases: Sequence) -> tuple[float, str]:
             continue
         good += 1
     return good / len(cases), "; ".join(dict.fromkeys(notes))
+
+
+# ----------------------------------------------------------------- a notebook on one's own data
+NOT_OWN_DATA = (
+    "not graded: this notebook was not done on your own data (its DATA is another variant's: "
+    "is VARIANT another student's code, or empty?); the functions and the symbolic answers, the "
+    "same for everyone, earn points only in a notebook done on your own data"
+)
+
+
+def _canonical(value: Any) -> Any:
+    """Plain nested lists, dicts, strings and floats: the form DATA crosses the boundary in."""
+    if isinstance(value, dict):
+        return {str(k): _canonical(v) for k, v in value.items()}
+    if isinstance(value, np.ndarray):
+        return _canonical(value.tolist())
+    if isinstance(value, (list, tuple)):
+        return [_canonical(v) for v in value]
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    if isinstance(value, (int, float, np.integer, np.floating)):
+        return float(value)
+    return value
+
+
+def _same(a: Any, b: Any) -> bool:
+    if isinstance(a, dict) and isinstance(b, dict):
+        return a.keys() == b.keys() and all(_same(a[k], b[k]) for k in a)
+    if isinstance(a, list) and isinstance(b, list):
+        return len(a) == len(b) and all(_same(x, y) for x, y in zip(a, b, strict=True))
+    if isinstance(a, float) and isinstance(b, float):
+        return math.isclose(a, b, rel_tol=1e-12, abs_tol=1e-300)
+    return type(a) is type(b) and a == b
+
+
+def require_own_data(notebook_data, data: dict, homework: str) -> None:
+    """Raise :class:`AnswerError` unless a notebook graded on a variant was done on that variant.
+
+    For the hidden tests of the questions that are the same for everyone (functions, symbolic
+    answers): a friend's notebook, done with the friend's variant code, answers them just as well,
+    so they earn points only where the notebook's ``DATA`` is the student's own ``data``
+    (issue 24: a copied notebook is worth little).  ``notebook_data`` is a function fetching the
+    notebook's ``DATA`` (``lambda: student["DATA"]``): it is called only when ``data`` is not the
+    default variant's, so grading without a course secret, and notebooks done on the example
+    data, are unaffected.
+    """
+    from course_lib import variants
+
+    default = variants.generators()[homework](None)
+    if _same(_canonical(data), _canonical(default)):
+        return
+    if not _same(_canonical(notebook_data()), _canonical(data)):
+        raise AnswerError(NOT_OWN_DATA)

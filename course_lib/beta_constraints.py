@@ -31,6 +31,7 @@ from functools import lru_cache
 
 import numpy as np
 
+from . import own_work
 from ._bell import bell_row, bell_table, check_chain_rule_order
 from ._validation import as_real_array, check_integer
 
@@ -150,7 +151,6 @@ MAX_SYMBOLIC_ORDER = 12
 _CHAIN_RULE_AUTO_MAX = 6
 
 
-@lru_cache(maxsize=32)
 def beta_constraints(n: int, method: str = "auto") -> BetaConstraints:
     """Derive the Beta-constraints of orders ``1..n`` by the chain rule (seed 000 eq. (4)-(6)).
 
@@ -173,6 +173,14 @@ def beta_constraints(n: int, method: str = "auto") -> BetaConstraints:
     r^(1)(0) = beta1 q^(1)(1)
     r^(2)(0) = beta1^2 q^(2)(1) + beta2 q^(1)(1)
     """
+    own_work.require("course_lib.beta_constraints.beta_constraints")
+    return _cached_constraints(n, method)
+
+
+@lru_cache(maxsize=32)
+def _cached_constraints(n: int, method: str) -> BetaConstraints:
+    # the cache sits behind the guard: a cached result is not handed out during an exercise
+    own_work.require("course_lib.beta_constraints.beta_constraints")
     n = check_integer(n, "n", minimum=1)
     if n > MAX_SYMBOLIC_ORDER:
         raise ValueError(
@@ -187,7 +195,11 @@ def beta_constraints(n: int, method: str = "auto") -> BetaConstraints:
     return _chain_rule_constraints(n)
 
 
+beta_constraints.cache_clear = _cached_constraints.cache_clear  # type: ignore[attr-defined]
+
+
 def _bell_constraints(n: int) -> BetaConstraints:
+    own_work.require("course_lib.beta_constraints._bell_constraints")
     import sympy as sp
 
     betas = sp.symbols(f"beta1:{n + 1}")
@@ -202,6 +214,7 @@ def _bell_constraints(n: int) -> BetaConstraints:
 
 
 def _chain_rule_constraints(n: int) -> BetaConstraints:
+    own_work.require("course_lib.beta_constraints._chain_rule_constraints")
     sp, _t, u, q = _chain_rule_state()
     betas = sp.symbols(f"beta1:{n + 1}")
     Q = sp.symbols(f"q1:{n + 1}")
@@ -238,6 +251,7 @@ def beta_coefficients(betas: np.ndarray | list[float]) -> np.ndarray:
     -------
     ndarray of shape (n, n), lower triangular.
     """
+    own_work.require("course_lib.beta_constraints.beta_coefficients")
     b = _as_betas(betas)
     n = b.size
     return bell_table(b, n)[1:, 1:]
@@ -289,6 +303,7 @@ def apply_beta_constraints(q_derivs: np.ndarray, betas: np.ndarray | list[float]
     ndarray of shape (n, dim)
         ``r^{(i)}(0) = sum_k B_{i,k}(β) q^{(k)}(1)`` (seed 000 eq. (6), (7.1)-(7.4)).
     """
+    own_work.require("course_lib.beta_constraints.apply_beta_constraints")
     b = _as_betas(betas)
     Q = _as_derivs(q_derivs, "q_derivs", b.size)[: b.size]
     return beta_coefficients(b) @ Q
@@ -334,6 +349,7 @@ def solve_shape_parameters(q_derivs: np.ndarray, r_derivs: np.ndarray) -> ShapeP
     ValueError
         If ``q^{(1)}(1) = 0`` (``q`` not regular at the joint) or the shapes differ.
     """
+    own_work.require("course_lib.beta_constraints.solve_shape_parameters")
     R = _as_derivs(r_derivs, "r_derivs")
     n = R.shape[0]
     Q = _as_derivs(q_derivs, "q_derivs", n)[:n]

@@ -40,6 +40,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from . import own_work
 from ._validation import as_parameter_array, as_points, check_shape_parameters, scaled_norm
 from .bezier import _bernstein
 from .curve import PiecewiseBezier
@@ -177,6 +178,7 @@ def _leg_weights(b1: np.ndarray, b2: np.ndarray, seed_indexing: bool = False):
 # ------------------------------------------------------------- constructions
 def _quadratic_polygons(V: np.ndarray, b1: np.ndarray) -> np.ndarray:
     """Segments (m-1, 3, D) of the quadratic G1 Beta-spline; b1 one per leg (m values)."""
+    own_work.require("course_lib.beta_splines._quadratic_polygons")
     w = 1.0 / (1.0 + b1[:, None])
     J = (b1[:, None] * w) * V[:-1] + w * V[1:]  # J_i on leg i (no overflow for huge β1)
     S = V.shape[0] - 2
@@ -192,6 +194,7 @@ def _cubic_points(V: np.ndarray, b1: np.ndarray, b2: np.ndarray, seed_indexing: 
 
     ``seed_indexing=True`` uses the transcribed ratio γ_i : 1 : β1_i² γ_{i+1} (wrong).
     """
+    own_work.require("course_lib.beta_splines._cubic_points")
     a, b, c = _leg_weights(b1, b2, seed_indexing)
     W1 = (b + c)[:, None] * V[:-1] + a[:, None] * V[1:]
     W2 = c[:, None] * V[:-1] + (a + b)[:, None] * V[1:]
@@ -203,6 +206,7 @@ def _cubic_points(V: np.ndarray, b1: np.ndarray, b2: np.ndarray, seed_indexing: 
 def _junctions(W1: np.ndarray, W2: np.ndarray, b1: np.ndarray) -> np.ndarray:
     """``J_j = (β1_j W_{j-1,2} + W_{j,1}) / (1 + β1_j)`` (step (2)), without overflow for
     huge β1 or coordinates."""
+    own_work.require("course_lib.beta_splines._junctions")
     w = 1.0 / (1.0 + b1[:, None])
     return (b1[:, None] * w) * W2[:-1] + w * W1[1:]
 
@@ -270,6 +274,7 @@ def quadratic_beta_spline(V: np.ndarray, beta1: float | np.ndarray = 1.0) -> Pie
         Fewer than 3 points, β1 <= 0 or wrong length (naming the joint), coincident
         consecutive control points (zero tangent at a junction).
     """
+    own_work.require("course_lib.beta_splines.quadratic_beta_spline")
     P = as_points(V, "V", min_points=3)
     m = P.shape[0] - 1
     b1 = _per_site(beta1, "beta1", m, m - 2, "leg V_i V_(i+1)", 1.0, True)
@@ -321,6 +326,7 @@ def cubic_beta_spline(
         whose ratio sums to zero (Barsky's ``δ = 0``, a true pole); γ undefined at both
         ends of a leg with different β1 (no limit); a zero tangent at a junction vertex.
     """
+    own_work.require("course_lib.beta_splines.cubic_beta_spline")
     P = as_points(V, "V", min_points=4)
     m = P.shape[0] - 1
     b1 = _per_site(beta1, "beta1", m + 1, m - 3, "control vertex", 1.0, True)

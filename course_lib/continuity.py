@@ -53,6 +53,7 @@ from functools import lru_cache
 
 import numpy as np
 
+from . import own_work
 from ._bell import bell_row, check_chain_rule_order
 from ._validation import check_finite_scalar, check_integer, scaled_norm
 from .differential_geometry import _arc_length_derivatives_unit, _typical_speed
@@ -221,6 +222,7 @@ def _solve_betas(Q: np.ndarray, R: np.ndarray):
     Q, R: (n, J, dim) derivatives of orders 1..n.  Returns betas (n, J), the residual
     vectors (n, J, dim) and the Bell table ``B[i, k] = B_{i,k}(β)`` (n+1, n+1, J), built
     order by order (``bell_row``)."""
+    own_work.require("course_lib.continuity._solve_betas")
     n, J = Q.shape[0], Q.shape[1]
     q1 = Q[0]
     qq = np.einsum("jd,jd->j", q1, q1)
@@ -405,6 +407,7 @@ def joint_continuity(
         geometric continuity is defined for regular parametrizations only; or
         ``max_order`` above the cap.
     """
+    own_work.require("course_lib.continuity.joint_continuity")
     q = as_parametrization(q, "q")
     r = as_parametrization(r, "r")
     n, rtol, atol = _check_options(max_order, rtol, atol)
@@ -491,6 +494,7 @@ def curve_continuity(
     ``[t_i, t_{i+1}]``, seed 004 §19.7), so the knots affect ``c_order`` but
     not ``g_order``.
     """
+    own_work.require("course_lib.continuity.curve_continuity")
     from .curve import PiecewiseBezier
 
     if not isinstance(curve, PiecewiseBezier):

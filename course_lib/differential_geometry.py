@@ -31,6 +31,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from . import own_work
 from ._bell import bell_row, check_chain_rule_order
 from ._bezier_length import piece_lengths, segment_length, segment_lengths
 from ._validation import (
@@ -129,6 +130,7 @@ def frame_from_derivatives(d1: np.ndarray, d2: np.ndarray, speed: np.ndarray | N
     -------
     T, K : ndarray, each of the shape of ``d1``
     """
+    own_work.require("course_lib.differential_geometry.frame_from_derivatives")
     v = np.sqrt(np.einsum("...d,...d->...", d1, d1)) if speed is None else speed
     T = d1 / v[..., None]
     K = (d2 - np.einsum("...d,...d->...", d2, T)[..., None] * T) / (v * v)[..., None]
@@ -176,6 +178,7 @@ def _integrate_speed(
     piece measured by :func:`course_lib._bezier_length.piece_lengths` instead: the same
     certified rules as :func:`arc_length`, accurate near cusps too.
     """
+    own_work.require("course_lib.differential_geometry._integrate_speed")
     a = np.asarray(a, dtype=float)
     b = np.asarray(b, dtype=float)
     if speed is None and type(curve) is PiecewiseBezier and a.size:
@@ -255,6 +258,7 @@ def unit_tangent(curve, t: float | np.ndarray) -> np.ndarray:
     ValueError
         If the parametrization is not regular at some ``t``.
     """
+    own_work.require("course_lib.differential_geometry.unit_tangent")
     curve = as_parametrization(curve)
     tt, scalar = _params(curve, t)
     d1 = curve.evaluate(tt, 1)
@@ -288,6 +292,7 @@ def curvature_vector(curve, t: float | np.ndarray) -> np.ndarray:
     in the plane it equals ``kappa N`` (seed 000 §6, Theorem 1: G2 = common
     unit tangent and curvature vector).
     """
+    own_work.require("course_lib.differential_geometry.curvature_vector")
     curve = as_parametrization(curve)
     tt, scalar = _params(curve, t)
     d1 = curve.evaluate(tt, 1)
@@ -302,6 +307,7 @@ def signed_curvature(curve, t: float | np.ndarray) -> float | np.ndarray:
     Positive where the curve turns left (towards ``N = (-T_2, T_1)``), negative
     where it turns right; ``|kappa| = 1/R`` for a circle of radius ``R``.
     """
+    own_work.require("course_lib.differential_geometry.signed_curvature")
     curve = as_parametrization(curve)
     _require_plane(curve, "signed_curvature")
     tt, scalar = _params(curve, t)
@@ -314,6 +320,7 @@ def signed_curvature(curve, t: float | np.ndarray) -> float | np.ndarray:
 
 def curvature(curve, t: float | np.ndarray) -> float | np.ndarray:
     """Unsigned curvature ``|c' x c''| / |c'|^3`` = length of the curvature vector (2D or 3D)."""
+    own_work.require("course_lib.differential_geometry.curvature")
     K = curvature_vector(curve, t)
     k = np.linalg.norm(np.atleast_2d(K), axis=-1)
     return float(k[0]) if np.ndim(t) == 0 else k
@@ -336,6 +343,7 @@ def osculating_circle(curve, t: float | np.ndarray) -> tuple[np.ndarray, float |
     ValueError
         Where the curvature vanishes (the circle degenerates into the tangent line).
     """
+    own_work.require("course_lib.differential_geometry.osculating_circle")
     curve = as_parametrization(curve)
     tt, scalar = _params(curve, t)
     K = np.atleast_2d(curvature_vector(curve, tt))
@@ -361,6 +369,7 @@ def cumulative_arc_length(curve, t: float | np.ndarray) -> float | np.ndarray:
     requested parameters and the knots (the speed of a piecewise curve is only
     piecewise smooth), relative accuracy about 1e-13 or better.
     """
+    own_work.require("course_lib.differential_geometry.cumulative_arc_length")
     curve = as_parametrization(curve)
     tt, scalar = _params(curve, t)
     a = curve.domain[0]
@@ -390,6 +399,7 @@ def arc_length(curve, t0: float | None = None, t1: float | None = None) -> float
     bisected until two successive levels agree to 1e-13 (relative), on each smooth piece
     (split at the knots of a :class:`~course_lib.curve.PiecewiseBezier`).
     """
+    own_work.require("course_lib.differential_geometry.arc_length")
     if t0 is None and t1 is None and type(curve) is PiecewiseBezier:
         return _bezier_length(curve)  # the hot path: nothing to validate
     curve = as_parametrization(curve)
@@ -436,6 +446,7 @@ def parameter_at_arc_length(curve, s: float | np.ndarray) -> float | np.ndarray:
     ValueError
         If some ``s`` lies outside ``[0, L]``.
     """
+    own_work.require("course_lib.differential_geometry.parameter_at_arc_length")
     curve = as_parametrization(curve)
     ss, scalar = as_parameter_array(s, "s")
     bp = breakpoints(curve)

@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from . import own_work
 from ._validation import as_points, check_knots
 from .curve import PiecewiseBezier
 
@@ -39,6 +40,7 @@ def knot_ratio_beta1(knots: np.ndarray) -> np.ndarray:
     ndarray of shape (L - 1,)
         Entry ``k`` belongs to joint ``k`` of the curve (the knot ``t_{k+1}``).
     """
+    own_work.require("course_lib.knot_splines.knot_ratio_beta1")
     t = check_knots(knots, "knots")
     h = np.diff(t)
     return h[1:] / h[:-1]
@@ -61,6 +63,7 @@ def _inputs(d_points: object, knots: object) -> tuple[np.ndarray, np.ndarray, in
 
 
 def _joint_points(D: np.ndarray, t: np.ndarray, L: int) -> np.ndarray:
+    own_work.require("course_lib.knot_splines._joint_points")
     P = np.empty((3 * L + 1, D.shape[1]))
     P[0] = D[0]
     P[3 * L] = D[-1]
@@ -102,6 +105,7 @@ def bezier_points_from_g1(d_points: np.ndarray, knots: np.ndarray) -> np.ndarray
         Odd number of points, fewer than 4, knots not strictly increasing or of the
         wrong length, coincident ``p_{3i-1} = p_{3i+1}`` (no tangent at a joint).
     """
+    own_work.require("course_lib.knot_splines.bezier_points_from_g1")
     return _joint_points(*_inputs(d_points, knots))
 
 
@@ -115,6 +119,7 @@ def g1_knot_spline(d_points: np.ndarray, knots: np.ndarray) -> PiecewiseBezier:
         ``info``: ``beta1`` (knot ratios per joint), ``junction_points``
         (``p_3 .. p_{3L-3}``), ``d_points``.
     """
+    own_work.require("course_lib.knot_splines.g1_knot_spline")
     D, t, L = _inputs(d_points, knots)
     P = _joint_points(D, t, L)
     segs = [P[3 * i : 3 * i + 4] for i in range(L)]

@@ -53,6 +53,7 @@ from pathlib import Path
 
 import numpy as np
 
+from . import own_work
 from ._svg_path import svg_subpaths
 from ._validation import as_points, check_finite_scalar
 from .curve import PiecewiseBezier
@@ -608,6 +609,7 @@ def classify_joints(
     -------
     JointTable
     """
+    own_work.require("course_lib.outlines.classify_joints")
     if not isinstance(outline, Outline):
         raise TypeError(f"outline must be an Outline, got {type(outline).__name__}")
     corner_angle = check_finite_scalar(corner_angle, "corner_angle")

@@ -29,6 +29,7 @@ from math import factorial
 
 import numpy as np
 
+from . import own_work
 from ._bell import check_chain_rule_order, compose_derivatives
 from ._validation import as_parameter_array, as_real_array, check_finite_scalar, check_integer
 from .parametrization import _check_domain, as_parametrization, check_in_domain
@@ -397,6 +398,7 @@ def faa_di_bruno(outer_derivs: np.ndarray, inner_derivs: np.ndarray) -> np.ndarr
     ndarray shaped like ``outer_derivs``
         Row ``i - 1`` is ``(g o f)^{(i)}(t)``.
     """
+    own_work.require("course_lib.reparametrization.faa_di_bruno")
     outer = as_real_array(outer_derivs, "outer_derivs", "an array of derivatives")
     inner = as_real_array(inner_derivs, "inner_derivs", "an array of derivatives")
     if outer.ndim == 0:

@@ -31,6 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from . import own_work
 from ._validation import (
     as_points,
     as_real_array,
@@ -85,6 +86,7 @@ def g1_stitch_points(V: np.ndarray, beta1: float) -> np.ndarray:
     -------
     ndarray of shape (2, dim)
     """
+    own_work.require("course_lib.stitching.g1_stitch_points")
     P = _polygon(V, min_points=2)  # eq. (9)-(10) use only V_(d-1), V_d: d = 1 works
     b1 = check_positive(beta1, "beta1")
     return np.array([P[-1], P[-1] + b1 * (P[-1] - P[-2])])
@@ -99,6 +101,7 @@ def g2_stitch_points(V: np.ndarray, beta1: float, beta2: float) -> np.ndarray:
     -------
     ndarray of shape (3, dim)
     """
+    own_work.require("course_lib.stitching.g2_stitch_points")
     P = _polygon(V)
     b1 = check_positive(beta1, "beta1")
     b2 = check_finite_scalar(beta2, "beta2")
@@ -106,6 +109,7 @@ def g2_stitch_points(V: np.ndarray, beta1: float, beta2: float) -> np.ndarray:
 
 
 def _g2_points(P: np.ndarray, b1: float, b2: float) -> np.ndarray:
+    own_work.require("course_lib.stitching._g2_points")
     d = P.shape[0] - 1
     W0 = P[-1]
     W1 = W0 + b1 * (P[-1] - P[-2])
@@ -149,6 +153,7 @@ def g1_stitch(V: np.ndarray, beta1: float, W_rest: np.ndarray) -> PiecewiseBezie
     PiecewiseBezier
         ``info``: ``beta1`` (one value), ``W01`` (the constructed ``W_0, W_1``).
     """
+    own_work.require("course_lib.stitching.g1_stitch")
     P = _polygon(V, min_points=2)
     W = g1_stitch_points(P, beta1)
     R = _rest(W_rest, P.shape[0] - 2, P.shape[1], "G1 fixed W_0, W_1")
@@ -172,6 +177,7 @@ def g2_stitch(
         ``info``: ``beta1``, ``beta2`` (one value each), ``W012``, and Farin-Boehm's
         ``T`` and ``gamma`` when γ is defined.
     """
+    own_work.require("course_lib.stitching.g2_stitch")
     P = _polygon(V)
     W = g2_stitch_points(P, beta1, beta2)
     R = _rest(W_rest, P.shape[0] - 3, P.shape[1], "G2 fixed W_0, W_1, W_2")
@@ -194,6 +200,7 @@ def farin_boehm_gamma(beta1: float, beta2: float, d: int = 3, *, joint: int | No
         If ``β1 <= 0``, or ``β2 = -β1 (d-1)(1+β1)`` (denominator zero: γ undefined;
         the message names ``beta2`` and, if given, the joint).
     """
+    own_work.require("course_lib.stitching.farin_boehm_gamma")
     at = "" if joint is None else f" at joint {joint}"
     b1 = check_finite_scalar(beta1, "beta1")
     if b1 <= 0:
@@ -258,6 +265,7 @@ def farin_boehm(
     ValueError
         If ``β1 <= 0``, ``V_{d-1} = V_d``, or γ is undefined and ``at_infinity="raise"``.
     """
+    own_work.require("course_lib.stitching.farin_boehm")
     P = as_points(V_last3, "V_last3", min_points=3)
     if P.shape[0] != 3:
         raise ValueError(
@@ -302,6 +310,7 @@ def gn_stitch_points(V: np.ndarray, betas: object) -> np.ndarray:
     -------
     ndarray of shape (n + 1, dim)
     """
+    own_work.require("course_lib.stitching.gn_stitch_points")
     from math import comb, factorial
 
     from .beta_constraints import apply_beta_constraints
@@ -349,6 +358,7 @@ def gn_stitch(V: np.ndarray, betas: object, W_rest: np.ndarray | None = None) ->
     PiecewiseBezier
         ``info``: ``beta1 .. beta{n}`` (one value each), ``betas``, ``W_fixed``.
     """
+    own_work.require("course_lib.stitching.gn_stitch")
     P = _polygon(V, min_points=2)
     W = gn_stitch_points(P, betas)
     n = W.shape[0] - 1

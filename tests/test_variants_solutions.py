@@ -2,7 +2,8 @@
 
 * The solution notebook, run in-process with a student's code, scores full marks on 50 variants.
 * The same answers graded on another student's data lose the points of every data question
-  whose answer differs, and keep those of the questions that are the same for everyone
+  whose answer differs, and those of the questions that are the same for everyone (a notebook
+  not done on one's own data earns none of them: ``answers.require_own_data``)
   (questions worth 0 points, feedback-only multiple choice, are left out of that comparison).
 """
 
@@ -68,8 +69,8 @@ def test_a_solution_done_with_another_code_loses_the_points_of_every_answer_that
             if q in data_questions and differ(wa[f"answer_{q}"], wb[f"answer_{q}"]):
                 assert fraction < 1.0, (a, b, q)
                 lost += 1
-            elif q not in data_questions:
-                assert fraction == 1.0, (a, b, q)  # the same for everyone
+            elif q not in data_questions:  # the same for everyone: only on one's own data
+                assert fraction == 0.0, (a, b, q)
             total += fraction * points
         # marked wrong also where no point is at stake (multiple choice); points lost elsewhere
         assert total < sum(home.hidden.POINTS.values()), (a, b)

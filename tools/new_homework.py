@@ -136,6 +136,12 @@ SOURCE = r'''# Source of exercises/@STEM@.ipynb and solutions/@STEM@.ipynb.
 # The checks are feedback, not the grade: the grade comes from other tests with other data, so
 # write code that works in general. Keep the names (`answer_q1`, `unit_tangent`, ...), do not
 # delete cells, and before you hand in run *Kernel → Restart Kernel and Run All Cells*.
+#
+# **Your own work.** Points are for what you write yourself. A function you write must not call
+# the `course_lib` function that already does it (each function question says what you may
+# use): while your function is checked or graded, those library functions raise an error --
+# "… is the exercise of @HW@.q2: write it yourself" -- and the question earns 0 points. The
+# checks do not hand out answers either: they say ✓ or ✗, and what kind of case went wrong.
 
 # %% [markdown]
 # ## Preparations

@@ -83,6 +83,7 @@ from ._core import (
     is_unanswered,
     registry,
     run_validate,
+    values_digest,
 )
 
 __all__ = [
@@ -96,6 +97,8 @@ __all__ = [
     "check_value",
     "questions",
     "quiz",
+    "registry",
+    "values_digest",
 ]
 
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 import hashlib
 import html
 import signal
+import sys
 import threading
 from collections.abc import Callable, Mapping
 from contextlib import contextmanager
@@ -17,7 +18,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .. import answers
+from .. import answers, own_work
 
 __all__ = [
     "AnswerProblem",
@@ -32,8 +33,10 @@ __all__ = [
     "fail",
     "is_unanswered",
     "ok",
+    "refuse_if_traced",
     "register",
     "registry",
+    "values_digest",
 ]
 
 #: Seconds a student's function may run inside a feedback check before we give up.
@@ -168,6 +171,25 @@ def registry() -> Mapping[str, Question]:
 # --------------------------------------------------------------------------- answers
 is_unanswered = answers.is_unanswered
 
+#: What a check says when a tracer or profiler runs: it would see the values the check computes
+#: from the student's data (issue 27 §8), so the check computes nothing.
+TRACED = (
+    "the checks do not run under a tracer, profiler or debugger (sys.settrace, sys.setprofile, "
+    "%prun, pdb): run the cell without it."
+)
+_gettrace, _getprofile = sys.gettrace, sys.getprofile
+
+
+def refuse_if_traced() -> None:
+    """Raise :class:`AnswerProblem` if a trace or profile function is set on this thread.
+
+    Every reader of an answer calls it after reading (the answer's own code may have set one),
+    :func:`call_answer` after the student's function returns, and :func:`run_validate` before a
+    check starts, so nothing a check derives from the question's data runs while traced.
+    """
+    if _gettrace() is not None or _getprofile() is not None:
+        raise AnswerProblem(TRACED)
+
 
 def _describe(answer: object) -> str:
     return answers.describe(answer)
@@ -180,7 +202,9 @@ def _exception_text(exc: BaseException) -> str:
 
 def as_number(answer: object, name: str = "your answer", hint: str = "") -> float:
     """Read a real number as the grader reads it (:func:`course_lib.answers.number`)."""
-    return answers.number(answers.plain(answer, name), name, hint)
+    value = answers.number(answers.plain(answer, name), name, hint)
+    refuse_if_traced()
+    return value
 
 
 def as_vector(
@@ -190,7 +214,9 @@ def as_vector(
     what: str = "an array",
 ) -> np.ndarray:
     """Read an array of ``shape`` as the grader reads it (:func:`course_lib.answers.array`)."""
-    return answers.array(answers.plain(answer, name), shape, name, what)
+    value = answers.array(answers.plain(answer, name), shape, name, what)
+    refuse_if_traced()
+    return value
 
 
 class _TimeLimit(Exception):
@@ -229,7 +255,10 @@ def call_answer(func: object, *args, name: str = "your function", **kwargs) -> o
         raise AnswerProblem(f"a function is expected, but {name} is {_describe(func)}.")
     try:
         with _time_limit(FUNCTION_TIME_LIMIT):
-            result = func(*args, **kwargs)
+            # the library's implementations of this exercise raise while it runs (own_work)
+            result = own_work.run_exercise(own_work.questions_of(name), func, *args, **kwargs)
+    except own_work.ExerciseError as exc:
+        raise AnswerProblem(f"{exc}.") from None
     except NotImplementedError:
         raise AnswerProblem(
             "not answered yet (the function still raises NotImplementedError).", unanswered=True
@@ -242,6 +271,7 @@ def call_answer(func: object, *args, name: str = "your function", **kwargs) -> o
         raise AnswerProblem(f"{name} recursed without end (RecursionError).") from None
     except Exception as exc:
         raise AnswerProblem(f"{name} raised {_exception_text(exc)}") from None
+    refuse_if_traced()  # the function may have left a tracer behind
     if result is Ellipsis:
         raise AnswerProblem(f"not answered yet ({name} returns ...).", unanswered=True)
     if result is None:
@@ -283,6 +313,7 @@ def answer_hash(answer: object, salt: str = "") -> str:
 def run_validate(qid: str, validate: Callable[[object], tuple[bool, str]], answer: object) -> Verdict:
     """Apply ``validate`` to ``answer`` and wrap the outcome in a :class:`Verdict`; never raises."""
     try:
+        refuse_if_traced()
         passed, message = validate(answer)
     except AnswerProblem as p:
         status = UNANSWERED if p.unanswered else FAIL
@@ -300,7 +331,9 @@ def run_validate(qid: str, validate: Callable[[object], tuple[bool, str]], answe
 
 def as_choice(answer: object, options: str, name: str = "your answer", *, single: bool = False) -> str:
     """The canonical letters of a multiple-choice answer, as the grader reads them."""
-    return answers.choice(answers.plain(answer, name), options, name, single=single)
+    value = answers.choice(answers.plain(answer, name), options, name, single=single)
+    refuse_if_traced()
+    return value
 
 
 def register_choice(
@@ -327,9 +360,27 @@ def register_choice(
     _REGISTRY[qid] = Question(qid, answer_name, validate, title)
 
 
+def values_digest(salt: str, values) -> str:
+    """A digest of a symbolic answer's values: the check compares digests, never expressions.
+
+    Each value is rounded to 10 significant digits (its canonical text ``%.9e``) and hashed with
+    ``salt`` (the question id) by SHA-256.  A check stores the digest of the right values,
+    computed once by hand (``tests/test_own_work.py`` recomputes it from the closed form and
+    proves that no right value lies near a rounding boundary), so the edition holds neither the
+    expression nor its values.
+    """
+    parts = []
+    for v in values:
+        z = complex(v)
+        parts.append(f"{z.real + 0.0:.9e},{z.imag + 0.0:.9e}")  # + 0.0: -0.0 is 0.0
+    return hashlib.sha256((salt + "|" + ";".join(parts)).encode()).hexdigest()[:32]
+
+
 def as_expression_values(answer: object, symbols, points, name: str = "your answer"):
     """``(free symbol names, values at points)`` of a symbolic answer, as the grader gets them."""
-    return answers.evaluate(answer, symbols, points, name)
+    value = answers.evaluate(answer, symbols, points, name)
+    refuse_if_traced()
+    return value
 
 
 def unit(v: np.ndarray) -> np.ndarray:

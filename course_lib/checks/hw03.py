@@ -14,7 +14,6 @@ from __future__ import annotations
 import numpy as np
 
 from .. import answers, variants
-from ..knot_splines import bezier_points_from_g1
 from . import _variants_hw03  # registers the generator of hw03's data
 from ._core import (
     as_choice,
@@ -26,6 +25,7 @@ from ._core import (
     fail,
     ok,
     register,
+    values_digest,
 )
 
 #: Finn's G1 control points d_{-1}, d_0, ..., d_{2L} of the example data (L = 3): the function
@@ -72,16 +72,25 @@ def _q1(answer):
     return fail(why) if why else ok("correct: p_3 has the barycentric coordinates of t_1.")
 
 
+def _copied_point(d: np.ndarray, k: int, L: int) -> np.ndarray:
+    """The control point p_k that is one of the d's (k not a joint): a copy of the data."""
+    if k == 3 * L:
+        return d[-1]
+    i, r = divmod(k, 3)
+    return d[0] if r == 0 else d[2 * i + r]  # r == 0 only for k = 0: joints are no copies
+
+
 def _compare_points(p: np.ndarray, d: np.ndarray, knots) -> str | None:
-    ref = bezier_points_from_g1(d, knots)
+    """What is wrong with p_0 .. p_{3L}: the d's copied where they belong, and every joint point
+    with the property of seed 004 §19.6 (the check never builds the spline itself)."""
     L = len(knots) - 1
-    for k in range(ref.shape[0]):
+    for k in range(3 * L + 1):
         if k % 3 == 0 and 0 < k < 3 * L:
             i = k // 3
             why = _joint_problem(p[k - 1], p[k], p[k + 1], knots[i] - knots[i - 1], knots[i + 1] - knots[i])
-            if why and close(p[k - 1], ref[k - 1]) and close(p[k + 1], ref[k + 1]):
+            if why and close(p[k - 1], _copied_point(d, k - 1, L)) and close(p[k + 1], _copied_point(d, k + 1, L)):
                 return f"joint {i} (p_{k}): {why}"
-        elif not close(p[k], ref[k]):
+        elif not close(p[k], _copied_point(d, k, L)):
             return (
                 f"p_{k} is not the right G1 control point: p_0, p_1, p_2 = d_-1, d_0, d_1, then "
                 "p_{3i+1}, p_{3i+2} = d_{2i}, d_{2i+1}, and p_{3L} = d_{2L}."
@@ -129,12 +138,9 @@ def _q3(answer):
 @register("hw03.q4", "answer_q4", "which knot sequence gives C1 in local parameters")
 def _q4(answer):
     letters = as_choice(answer, "abc", "answer_q4")
-    d, knots = _points(), _knots("q3")
-    right = []
-    for x in "abc":  # every joint point the midpoint of its neighbours (seed 004 §19.6)
-        p = bezier_points_from_g1(d, knots[x])
-        if all(close(p[k], (p[k - 1] + p[k + 1]) / 2) for k in (3, 6)):
-            right.append(x)
+    knots = _knots("q3")
+    # every joint point the midpoint of its neighbours (seed 004 §19.6): equal knot intervals
+    right = [x for x in "abc" if np.ptp(np.diff(np.asarray(knots[x], dtype=float))) < 1e-12]
     if letters == ",".join(right):
         return ok("right.")
     return fail("not this one -- think again (re-read the statement).")
@@ -144,12 +150,15 @@ def _q4(answer):
 def _q5(answer):
     v = as_vector(answer, (2, 2), "answer_q5", "an array [left derivative, right derivative]")
     t = _knots("q3")[variants.current("hw03")["q5"]["letter"]]  # the sequence named in q5
-    p = bezier_points_from_g1(_points(), t)
-    left = 3 * (p[3] - p[2]) / (t[1] - t[0])
-    right = 3 * (p[4] - p[3]) / (t[2] - t[1])
-    if close(v[0], left) and close(v[1], right):
+    d = _points()
+    p2, p4, a, b = d[2], d[3], t[1] - t[0], t[2] - t[1]
+    # the defining property: the joint point p3 your derivatives imply, p2 + a v_left / 3 and
+    # p4 - b v_right / 3 (segment ends: c'(t1) = 3 (p3 - p2)/a = 3 (p4 - p3)/b), is the joint
+    # point of seed 004 §19.6 -- the check never computes the derivatives itself
+    left, right = _joint_problem(p2, p2 + a * v[0] / 3, p4, a, b), _joint_problem(p2, p4 - b * v[1] / 3, p4, a, b)
+    if left is None and right is None:
         return ok("correct -- and they are equal: the spline is C1 in the global parameter t.")
-    if close(v[0], 3 * (p[3] - p[2])) or close(v[1], 3 * (p[4] - p[3])):
+    if _joint_problem(p2, p2 + v[0] / 3, p4, a, b) is None or _joint_problem(p2, p4 - v[1] / 3, p4, a, b) is None:
         return fail(
             "that is a derivative in the local parameter s; in the global t, ds/dt = "
             "1 / (t_i - t_{i-1}) multiplies it."
@@ -172,22 +181,20 @@ def _q6_points() -> np.ndarray:
 _Q6_POINTS = _q6_points()
 
 
+#: values_digest("hw03.q6", values at _Q6_POINTS) of the left derivative at t1 and of the same
+#: derivative in the local parameter (a typical mistake): digests, not expressions.
+_Q6_RIGHT = "79e9dfdb1e17d21a5e4fcfd8b7c81832"
+_Q6_LOCAL = "8448b6e001abeb68b40e1010fb977bba"
+
+
 @register("hw03.q6", "answer_q6", "sympy: the left derivative at t_1 in closed form")
 def _q6(answer):
-    import sympy as sp
-
-    t0, t1, t2, p2, p4 = syms = sp.symbols(_Q6_SYMBOLS)
     free, values = as_expression_values(answer, _Q6_SYMBOLS, _Q6_POINTS, "answer_q6")
-    p3 = ((t2 - t1) * p2 + (t1 - t0) * p4) / (t2 - t0)
-
-    def at_points(expr):
-        f = sp.lambdify(syms, expr, "math")
-        return [float(f(*p)) for p in _Q6_POINTS.tolist()]
-
-    left = 3 * (p3 - p2) / (t1 - t0)
-    if answers.expression_matches(free, values, at_points(left), _Q6_SYMBOLS, "answer_q6"):
+    answers.expression_matches(free, values, values, _Q6_SYMBOLS, "answer_q6")  # symbols, finite
+    digest = values_digest("hw03.q6", values)
+    if digest == _Q6_RIGHT:
         return ok("correct: t1 cancels, and the right derivative gives the same expression.")
-    if answers.expression_matches(free, values, at_points(3 * (p3 - p2)), _Q6_SYMBOLS):
+    if digest == _Q6_LOCAL:
         return fail("that is the derivative in the local parameter; divide by t1 - t0 (chain rule).")
     return fail("not the left derivative 3 (p3 - p2) / (t1 - t0) with p3 from the knots; simplify it.")
 

@@ -119,18 +119,6 @@ def _q2(func):
     return ok(f"correct on {len(_Q2_CASES)} cases (font units, em, rotated, tiny, antiparallel).")
 
 
-def _quad_end_curvatures(P0, A, B, P2) -> np.ndarray:
-    """Signed curvature at M = (A + B)/2 at the end of P0, A, M and the start of M, B, P2."""
-    M = (A + B) / 2
-
-    def kappa(d1, d2):
-        return cross2(d1, d2) / np.linalg.norm(d1) ** 3
-
-    return np.array(
-        [kappa(2 * (M - A), 2 * (P0 - 2 * A + M)), kappa(2 * (B - M), 2 * (M - 2 * B + P2))]
-    )
-
-
 @register(
     "hw05.q3", "answer_q3", "the signed curvatures on both sides of an implied point of your glyph"
 )
@@ -138,7 +126,15 @@ def _q3(answer):
     got = as_vector(answer, (2,), "answer_q3", "two numbers [kappa_in, kappa_out]")
     q3 = _data()["q3"]
     em = q3["em"]
-    right = _quad_end_curvatures(*(np.array(q3["points"], dtype=float) / em))
+    P0, A, B, P2 = np.array(q3["points"], dtype=float) / em
+    M = (A + B) / 2  # the end of P0, A, M and the start of M, B, P2, in place (no helper)
+    d1_in, d2_in, d1_out, d2_out = 2 * (M - A), 2 * (P0 - 2 * A + M), 2 * (B - M), 2 * (M - 2 * B + P2)
+    right = np.array(
+        [
+            cross2(d1_in, d2_in) / np.linalg.norm(d1_in) ** 3,
+            cross2(d1_out, d2_out) / np.linalg.norm(d1_out) ** 3,
+        ]
+    )
     if close(got, right):
         return ok("correct: the curvature jumps at the implied point, so it is G1 but not G2.")
     if close(got, right[::-1]):
@@ -167,13 +163,6 @@ def _q4(answer):
     if letter == _variants_hw05.right_letter(_data()):  # the reason "parallel", in your order
         return ok("right.")
     return fail("not this one -- think again (re-read the statement).")
-
-
-def _bspline_polygons(V: np.ndarray) -> np.ndarray:
-    from ..beta_splines import cubic_beta_spline
-
-    E = np.vstack([2 * V[0] - V[1], V, 2 * V[-1] - V[-2]])
-    return np.array(cubic_beta_spline(E, 1.0, 0.0).segments)
 
 
 def _bowl(data: dict) -> np.ndarray:
@@ -237,7 +226,10 @@ def _q5(func):
         why = _run_problem(V, W)
         if why:
             return fail(f"n = {n}: {why}")
-        if not close(W, _bspline_polygons(V)):
+        # the uniform cubic B-spline on E = V_-1, V0, ..., Vn+1: each segment's inner Bézier
+        # points trisect its leg E_(i+1) E_(i+2) (with the C1 joints above, that is all of it)
+        E = np.vstack([2 * V[0] - V[1], V, 2 * V[-1] - V[-2]])
+        if not (close(W[:, 1], (2 * E[1:-2] + E[2:-1]) / 3) and close(W[:, 2], (E[1:-2] + 2 * E[2:-1]) / 3)):
             return fail(
                 f"n = {n}: corners, end tangents and C2 joints are right, but this is not the uniform cubic "
                 "B-spline on V−1, V0, ..., Vn+1 (the cubic Beta-spline with β1 = 1, β2 = 0)."

@@ -135,6 +135,7 @@ def q1(student, data):
 
 
 def q2(student, data):
+    answers.require_own_data(lambda: student["DATA"], data, HOMEWORK)  # no copied notebook
     func = student.function("chain_rule_derivatives")
 
     def case(composite, s):

@@ -98,16 +98,17 @@ def answers_for(data):
     }
 
 
-#: is_g1 cases: (q'(1), r'(0), G1?) -- other data than the feedback check's.
+#: is_g1 cases: (q'(1), r'(0), G1?, the kind of case named in the feedback) -- other data than
+#: the feedback check's.  The feedback names the kind, never the vectors or the verdict.
 Q3_CASES = [
-    ((3.0, -1.0), (0.3, -0.1), True),
-    ((3.0, -1.0), (-3.0, 1.0), False),
-    ((3.0, -1.0), (3.0, -1.01), False),
-    ((0.0, 0.0, 2.0), (0.0, 0.0, 7.0), True),
-    ((1.0, 1.0, 1.0), (1.0, 1.0, -1.0), False),  # x, y parallel, z not
-    ((2e-4, 1e-4), (2e4, 1e4), True),
-    ((1e-5, 0.0, 0.0), (1e-5, 1e-5, 0.0), False),  # tiny and 45° apart
-    ((1.0, 0.0), (0.0, 0.0), False),  # a zero vector is not regular
+    ((3.0, -1.0), (0.3, -0.1), True, "tangents of very different lengths"),
+    ((3.0, -1.0), (-3.0, 1.0), False, "tangents in opposite directions"),
+    ((3.0, -1.0), (3.0, -1.01), False, "tangents at a small angle"),
+    ((0.0, 0.0, 2.0), (0.0, 0.0, 7.0), True, "space curves"),
+    ((1.0, 1.0, 1.0), (1.0, 1.0, -1.0), False, "space curves"),  # x, y parallel, z not
+    ((2e-4, 1e-4), (2e4, 1e4), True, "a tiny and a huge tangent"),
+    ((1e-5, 0.0, 0.0), (1e-5, 1e-5, 0.0), False, "tiny tangents"),  # tiny and 45° apart
+    ((1.0, 0.0), (0.0, 0.0), False, "a zero tangent (not regular)"),
 ]
 
 Q4_SYMBOLS = ("beta1", "beta2", "beta3", "beta4")
@@ -133,12 +134,13 @@ def q2(student, data):
 
 
 def q3(student, data):
+    answers.require_own_data(lambda: student["DATA"], data, HOMEWORK)  # no copied notebook
     func = student.function("is_g1")
 
-    def case(q, r, expected):
+    def case(q, r, expected, kind):
         def run():
             got = answers.boolean(func(np.array(q), np.array(r)), "is_g1's result")
-            assert got == expected, f"wrong for q1={q}, r1={r}"
+            assert got == expected, f"wrong for {kind}"
 
         return run
 
@@ -146,6 +148,7 @@ def q3(student, data):
 
 
 def q4(student, data):
+    answers.require_own_data(lambda: student["DATA"], data, HOMEWORK)  # no copied notebook
     # d⁴/dt⁴ q(u(t)): the q''-terms are 4 u' u''' + 3 u''² (Faà di Bruno, partitions of 4
     # into two blocks: 4 of type {1,3}, 3 of type {2,2}) -> 4 β1 β3 + 3 β2²
     free, values = student.expression("answer_q4", Q4_SYMBOLS, Q4_POINTS)

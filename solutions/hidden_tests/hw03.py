@@ -32,15 +32,15 @@ DATA = {"D": np.array([[0, 0], [1, 2], [2, 3], [4, 3], [5, 1], [6, 0], [8, 1], [
 _D3 = np.array([[0, 0, 1], [1, 1, 1], [2, 0, 0], [3, 1, 2], [4, 2, 1], [5, 0, 0], [6, 1, 1], [7, 2, 2.0]])
 #: g1_bezier_control_points cases (other data than the feedback check's).
 Q2_CASES = [
-    (DATA["D"], (0.0, 4.0, 5.0, 7.0)),
-    (_D3, (2.0, 2.5, 4.0, 4.25)),
-    (DATA["D"][:6], (0.0, 1.0, 1.5)),
+    (DATA["D"], (0.0, 4.0, 5.0, 7.0), "uneven knot spacing"),
+    (_D3, (2.0, 2.5, 4.0, 4.25), "a space curve"),
+    (DATA["D"][:6], (0.0, 1.0, 1.5), "two segments"),
 ]
 #: knot_ratio_beta1 cases: knots and β1 at the interior joints, by hand (Δt_i / Δt_{i-1}).
 Q7_CASES = [
-    ((0.0, 2.0, 3.0, 7.0), (0.5, 4.0)),
-    ((1.0, 4.0, 10.0), (2.0,)),
-    ((0.0, 1.0, 2.0, 3.0, 4.0), (1.0, 1.0, 1.0)),
+    ((0.0, 2.0, 3.0, 7.0), (0.5, 4.0), "uneven knot spacing"),
+    ((1.0, 4.0, 10.0), (2.0,), "a single joint"),
+    ((0.0, 1.0, 2.0, 3.0, 4.0), (1.0, 1.0, 1.0), "uniform knots"),
 ]
 Q6_SYMBOLS = ("t0", "t1", "t2", "p2", "p4")
 
@@ -127,6 +127,7 @@ def q1(student, data):
 
 
 def q2(student, data):
+    answers.require_own_data(lambda: student["DATA"], data, HOMEWORK)  # no copied notebook
     func = student.function("g1_bezier_control_points")
     return answers.partial_credit(
         [
@@ -134,9 +135,9 @@ def q2(student, data):
                 lambda d=d, k=k: func(d.copy(), np.array(k)),
                 _expected(d, k),
                 "the result",
-                f"wrong for knots {k}",
+                f"wrong for {kind}",
             )
-            for d, k in Q2_CASES
+            for d, k, kind in Q2_CASES
         ]
     )
 
@@ -162,6 +163,7 @@ def q5(student, data):
 
 
 def q6(student, data):
+    answers.require_own_data(lambda: student["DATA"], data, HOMEWORK)  # no copied notebook
     # 3 (p3 - p2)/(t1 - t0) with p3 - p2 = (t1 - t0)/(t2 - t0) (p4 - p2)  ->  3 (p4 - p2)/(t2 - t0)
     free, values = student.expression("answer_q6", Q6_SYMBOLS, Q6_POINTS)
     t0, t2, p2, p4 = Q6_POINTS[:, 0], Q6_POINTS[:, 2], Q6_POINTS[:, 3], Q6_POINTS[:, 4]
@@ -172,13 +174,14 @@ def q6(student, data):
 
 
 def q7(student, data):
+    answers.require_own_data(lambda: student["DATA"], data, HOMEWORK)  # no copied notebook
     func = student.function("knot_ratio_beta1")
 
-    def case(knots, expected):
+    def case(knots, expected, kind):
         def run():
             got = answers.array(func(np.array(knots)), (len(expected),), "the result", "one β1 per joint")
-            assert answers.close(got, expected), f"wrong for knots {list(knots)}"
+            assert answers.close(got, expected), f"wrong for {kind}"
 
         return run
 
-    return answers.partial_credit([case(k, e) for k, e in Q7_CASES])
+    return answers.partial_credit([case(*c) for c in Q7_CASES])

@@ -101,6 +101,7 @@ def q1(student, data):
 
 
 def q2(student, data):
+    answers.require_own_data(lambda: student["DATA"], data, HOMEWORK)  # no copied notebook
     func = student.function("g2_stitch")
 
     def case(V, b1, b2):
@@ -116,7 +117,8 @@ def q2(student, data):
                 and answers.close(r1_, b1 * q1_)
                 and answers.close(r2_, b1**2 * q2_ + b2 * q1_)
             )
-            assert ok, f"not G2 for degree {d}, β1 = {b1}, β2 = {b2}"
+            where = "a space curve" if V.shape[1] == 3 else "a plane curve"
+            assert ok, f"not G2 for {where} of degree {d}"
 
         return run
 
@@ -129,6 +131,7 @@ def q3(student, data):
 
 
 def q4(student, data):
+    answers.require_own_data(lambda: student["DATA"], data, HOMEWORK)  # no copied notebook
     func = student.function("quadratic_beta_spline")
 
     def case(V, b):
@@ -138,7 +141,9 @@ def q4(student, data):
             # junction on leg j: V_j + (V_{j+1} - V_j) / (1 + β_j) (divides it 1 : β_j)
             junction = [V[j] + (V[j + 1] - V[j]) / (1 + b[j]) for j in range(m)]
             expected = np.array([[junction[i - 1], V[i], junction[i]] for i in range(1, m)])
-            assert answers.close(W, expected), f"wrong for m = {m}"
+            assert answers.close(W, expected), (
+                "wrong for a single segment" if m == 2 else "wrong for several segments"
+            )
 
         return run
 

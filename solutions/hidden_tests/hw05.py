@@ -19,7 +19,8 @@ The data names the glyph (character, font file), the points of q3 and the order 
 reasons; every expected value is computed here from the font file and those points.  The
 function questions q2 and q5 are the same for everyone.  Multiple choice is feedback only
 (course policy: a student can find the letter by trying each in ``check()``): q4 is graded but
-worth 0 points.  :func:`answers_for` gives the worked answers of a variant
+worth 0 points; so are q1, q3 and q6, which ``classify_joints`` answers in a line (the
+README's list of questions open to a one-liner).  :func:`answers_for` gives the worked answers of a variant
 (``tools/variant.py show``).
 """
 
@@ -34,7 +35,9 @@ import numpy as np
 from course_lib import answers
 
 HOMEWORK = "hw05"
-POINTS = {"q1": 2, "q2": 3, "q3": 2, "q4": 0, "q5": 4, "q6": 1}
+#: q1, q3 and q6 are read off classify_joints, the tool this homework teaches: a library call
+#: answers them, so they are practice like multiple choice, worth 0 points (issue 24).
+POINTS = {"q1": 0, "q2": 3, "q3": 0, "q4": 0, "q5": 4, "q6": 0}
 
 VARIANTS = True
 
@@ -46,16 +49,26 @@ DATA = {"corner_deg": 2.0, "g2_rtol": 1e-8}
 #: The base decides the answer: rotating and scaling keep (non-)parallel chords.
 Q2_CASES = [
     # DejaVu Serif 'o', counter, lower right implied point: a G1 joint in font units
-    ([(616, 70), (764, 70), (915, 304), (915, 532)], 0.0, 1.0),
+    ([(616, 70), (764, 70), (915, 304), (915, 532)], 0.0, 1.0, "a point in font units"),
     # DejaVu Serif 'o', top of the outer ring (616, 1092) as a midpoint joint: symmetric, G2
-    ([(242.5, 939), (383, 1092), (849, 1092), (989.5, 939)], 0.0, 1.0),
-    ([(242.5, 939), (383, 1092), (849, 1092), (989.5, 939)], math.pi / 4, 1 / 2048),
+    ([(242.5, 939), (383, 1092), (849, 1092), (989.5, 939)], 0.0, 1.0, "a point in font units"),
+    (
+        [(242.5, 939), (383, 1092), (849, 1092), (989.5, 939)],
+        math.pi / 4,
+        1 / 2048,
+        "a rotated glyph in em units",
+    ),
     # DejaVu Serif 'D', G1, at a millionth of an em: only a relative test keeps it G1
-    ([(692, 106), (983, 106), (1294, 438), (1294, 748)], 0.3, 1e-8),
+    ([(692, 106), (983, 106), (1294, 438), (1294, 748)], 0.3, 1e-8, "a very small glyph"),
     # chord against the leg: parallel all the same
-    ([(0, 0), (2, 1), (5, 1), (-4, 0)], 1.0, 1.0),
+    ([(0, 0), (2, 1), (5, 1), (-4, 0)], 1.0, 1.0, "a chord pointing against the leg"),
     # leg tilted by a millionth: far above the 1e-9 tolerance
-    ([(0, 0), (1, 1), (2, Fraction(1) + Fraction(1, 10**6)), (3, 0)], 0.0, 1.0),
+    (
+        [(0, 0), (1, 1), (2, Fraction(1) + Fraction(1, 10**6)), (3, 0)],
+        0.0,
+        1.0,
+        "a leg and a chord almost parallel",
+    ),
 ]
 
 #: g2_run cases: the bowls of other glyphs (font units) and short runs.
@@ -157,15 +170,16 @@ def _rotated(points, angle, scale):
 
 
 def q2(student, data):
+    answers.require_own_data(lambda: student["DATA"], data, HOMEWORK)  # no copied notebook
     func = student.function("implied_is_g2")
 
-    def case(points, angle, scale):
+    def case(points, angle, scale, kind):
         def run():
             # exact: G2 iff (B - A) x (P2 - P0) == 0 in rationals (lecture 06, §2)
             P0, A, B, P2 = ([Fraction(v) for v in p] for p in points)
             expected = _cross((B[0] - A[0], B[1] - A[1]), (P2[0] - P0[0], P2[1] - P0[1])) == 0
             got = answers.boolean(func(*_rotated(points, angle, scale)), "implied_is_g2's result")
-            assert got == expected, f"wrong for a {'G2' if expected else 'G1'} implied point"
+            assert got == expected, f"wrong for {kind}"
 
         return run
 
@@ -213,6 +227,7 @@ def _by_hand(V):
 
 
 def q5(student, data):
+    answers.require_own_data(lambda: student["DATA"], data, HOMEWORK)  # no copied notebook
     func = student.function("g2_run")
 
     def case(points):
@@ -222,7 +237,8 @@ def q5(student, data):
             got = answers.array(
                 func(V.copy()), (n, 4, 2), "g2_run's result", "n cubic Bézier polygons"
             )
-            assert answers.close(got, _by_hand(V)), f"wrong for a run of {n + 1} points"
+            kind = {1: "a straight run", 2: "a run of a single quadratic"}.get(n, "a long run")
+            assert answers.close(got, _by_hand(V)), f"wrong for {kind}"
 
         return run
 

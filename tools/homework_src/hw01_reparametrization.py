@@ -27,6 +27,12 @@
 # Multiple-choice questions are for practice, worth 0 points: a letter can be found by trying
 # each one in its check.
 #
+# **Your own work.** Points are for what you write yourself. A function you write must not call
+# the `course_lib` function that already does it (each function question says what you may
+# use): while your function is checked or graded, those library functions raise an error --
+# "… is the exercise of hw01.q2: write it yourself" -- and the question earns 0 points. The
+# checks do not hand out answers either: they say ✓ or ✗, and what kind of case went wrong.
+#
 # **Your own data.** Every student gets their own numbers: paste the *variant code* your
 # instructor gave you into `VARIANT` below. The cells marked "your data" print the data of each
 # question; your code should use `DATA[...]` rather than typing the numbers. With `VARIANT = ""`
@@ -81,6 +87,12 @@ check("hw01.q1", answer_q1)
 # - `f1`, `f2`: the numbers $f'(s)$ and $f''(s)$.
 #
 # It must work in the plane and in space.
+#
+# **You may use:** numpy (and plain Python); no function of `course_lib`.
+# `course_lib.reparametrization.faa_di_bruno`, `course_lib._bell.compose_derivatives`,
+# `course_lib.beta_constraints.apply_beta_constraints`,
+# `course_lib.beta_constraints.beta_coefficients` do it for you, so they raise while your
+# function is checked or graded.
 
 # %%
 def chain_rule_derivatives(q1, q2, f1, f2):

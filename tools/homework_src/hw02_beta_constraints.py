@@ -26,6 +26,12 @@
 # Multiple-choice questions are for practice, worth 0 points: a letter can be found by trying
 # each one in its check.
 #
+# **Your own work.** Points are for what you write yourself. A function you write must not call
+# the `course_lib` function that already does it (each function question says what you may
+# use): while your function is checked or graded, those library functions raise an error --
+# "… is the exercise of hw02.q3: write it yourself" -- and the question earns 0 points. The
+# checks do not hand out answers either: they say ✓ or ✗, and what kind of case went wrong.
+#
 # **Your own data.** Every student gets their own numbers: paste the *variant code* your
 # instructor gave you into `VARIANT` below. The cells marked "your data" print the data of each
 # question; your code should use `DATA[...]` rather than typing the numbers. With `VARIANT = ""`
@@ -100,6 +106,11 @@ check("hw02.q2", answer_q2)
 # $\beta_1 > 0$, and `False` otherwise. Compare *directions* (the tolerance is for unit vectors),
 # so that very long and very short vectors are handled alike. A zero vector is not regular:
 # return `False`.
+#
+# **You may use:** numpy (and plain Python); no function of `course_lib`.
+# `course_lib.beta_constraints.solve_shape_parameters`,
+# `course_lib.continuity.joint_continuity`, `course_lib.continuity.curve_continuity` do it for
+# you, so they raise while your function is checked or graded.
 
 # %%
 def is_g1(q1, r1, tol=1e-9):

@@ -28,6 +28,12 @@
 # Multiple-choice questions are for practice, worth 0 points: a letter can be found by trying
 # each one in its check.
 #
+# **Your own work.** Points are for what you write yourself. A function you write must not call
+# the `course_lib` function that already does it (each function question says what you may
+# use): while your function is checked or graded, those library functions raise an error --
+# "… is the exercise of hw03.q7: write it yourself" -- and the question earns 0 points. The
+# checks do not hand out answers either: they say ✓ or ✗, and what kind of case went wrong.
+#
 # **Your own data.** Every student gets their own numbers: paste the *variant code* your
 # instructor gave you into `VARIANT` below. The cells marked "your data" print the data of each
 # question; your code should use `DATA[...]` rather than typing the numbers. With `VARIANT = ""`
@@ -78,6 +84,10 @@ check("hw03.q1", answer_q1)
 # shape `(2L + 2, dim)`, row $j$ holding $\mathbf d_{j-1}$) and the $L + 1$ knots, return the
 # $3L + 1$ Bézier control points $\mathbf p_0, \dots, \mathbf p_{3L}$ as an array of shape
 # `(3L + 1, dim)`. It must work for any $L \ge 1$ and in space too.
+#
+# **You may use:** numpy (and plain Python); no function of `course_lib`.
+# `course_lib.knot_splines.bezier_points_from_g1`, `course_lib.knot_splines.g1_knot_spline` do
+# it for you, so they raise while your function is checked or graded.
 
 # %%
 def g1_bezier_control_points(d, knots):
@@ -214,6 +224,10 @@ check("hw03.q6", answer_q6)
 # $\mathbf r'(0) = \beta_1 \mathbf q'(1)$. Write `knot_ratio_beta1(knots)` that returns, for
 # $L + 1$ knots, the $L - 1$ values of $\beta_1$ at the interior joints $i = 1, \dots, L-1$ as a
 # numpy array.
+#
+# **You may use:** numpy (and plain Python); no function of `course_lib`.
+# `course_lib.knot_splines.knot_ratio_beta1` does it for you, so it raises while your function
+# is checked or graded.
 
 # %%
 def knot_ratio_beta1(knots):

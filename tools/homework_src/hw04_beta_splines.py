@@ -23,6 +23,12 @@
 # Multiple-choice questions are for practice, worth 0 points: a letter can be found by trying
 # each one in its check.
 #
+# **Your own work.** Points are for what you write yourself. A function you write must not call
+# the `course_lib` function that already does it (each function question says what you may
+# use): while your function is checked or graded, those library functions raise an error --
+# "… is the exercise of hw04.q4: write it yourself" -- and the question earns 0 points. The
+# checks do not hand out answers either: they say ✓ or ✗, and what kind of case went wrong.
+#
 # **Your own data.** Every student gets their own numbers: paste the *variant code* your
 # instructor gave you into `VARIANT` below. The cells marked "your data" print the data of each
 # question; your code should use `DATA[...]` rather than typing the numbers. With `VARIANT = ""`
@@ -69,6 +75,13 @@ check("hw04.q1", answer_q1)
 # $\mathbf W_0, \mathbf W_1, \mathbf W_2$ of the next curve (same degree), shape `(3, dim)`, so
 # that the curves meet with $G^2$ continuity with respect to $\beta_1, \beta_2$. Derive
 # $\mathbf W_2$ from the second Beta-constraint; it must work for every degree.
+#
+# **You may use:** numpy (and plain Python); no function of `course_lib`.
+# `course_lib.stitching.g1_stitch_points`, `course_lib.stitching.g2_stitch_points`,
+# `course_lib.stitching.g2_stitch`, `course_lib.stitching.gn_stitch_points`,
+# `course_lib.stitching.gn_stitch`, `course_lib.beta_constraints.apply_beta_constraints`,
+# `course_lib.beta_constraints.beta_coefficients` do it for you, so they raise while your
+# function is checked or graded.
 
 # %%
 def g2_stitch(V, beta1, beta2):
@@ -126,6 +139,10 @@ check("hw04.q3", answer_q3)
 #
 # Write `quadratic_beta_spline(V, beta1)` (with `V` of shape `(m + 1, 2)` and `beta1` of shape
 # `(m,)`) returning the $m - 1$ Bézier polygons as an array of shape `(m - 1, 3, 2)`.
+#
+# **You may use:** numpy (and plain Python); no function of `course_lib`.
+# `course_lib.beta_splines.quadratic_beta_spline` does it for you, so it raises while your
+# function is checked or graded.
 
 # %%
 def quadratic_beta_spline(V, beta1):

@@ -29,6 +29,12 @@
 # hand in run *Kernel → Restart Kernel and Run All Cells*. Multiple-choice questions are for
 # practice, worth 0 points: a letter can be found by trying each one in its check.
 #
+# **Your own work.** Points are for what you write yourself. A function you write must not call
+# the `course_lib` function that already does it (each function question says what you may
+# use): while your function is checked or graded, those library functions raise an error --
+# "… is the exercise of hw05.q5: write it yourself" -- and the question earns 0 points. The
+# checks do not hand out answers either: they say ✓ or ✗, and what kind of case went wrong.
+#
 # **Your own data.** Every student gets their own glyph, point and option order: paste the
 # *variant code* your instructor gave you into `VARIANT` below. The cells marked "your data" print
 # the data of each question; your code should use `DATA[...]` rather than typing the numbers. With
@@ -57,7 +63,7 @@ glyph = glyph_outline(DATA["glyph"]["char"], DATA["glyph"]["font"])
 print(DATA["glyph"]["text"])  # your data
 
 # %% [markdown]
-# ## Question 1 — classify the joints of your glyph (compute)
+# ## Question 1 — classify the joints of your glyph (compute; practice: 0 points)
 #
 # Your glyph has two contours: the outer one (stem and bowl) and the counter inside the bowl. With
 # the lecture's tolerances (the defaults of `classify_joints`: a **corner** where the tangent
@@ -89,6 +95,11 @@ check("hw05.q1", answer_q1)
 # coordinates may be in font units (thousands) or in em (fractions): decide with a **relative**
 # test, G2 when $|(B - A) \times (P_2 - P_0)| \le 10^{-9}\,|B - A|\,|P_2 - P_0|$. You may
 # assume $A \ne B$ and $P_0 \ne P_2$.
+#
+# **You may use:** numpy (and plain Python); no function of `course_lib`.
+# `course_lib.outlines.classify_joints`, `course_lib.continuity.joint_continuity`,
+# `course_lib.continuity.curve_continuity` do it for you, so they raise while your function is
+# checked or graded.
 
 # %%
 def implied_is_g2(P0, A, B, P2):
@@ -105,7 +116,7 @@ def implied_is_g2(P0, A, B, P2):
 check("hw05.q2", implied_is_g2)
 
 # %% [markdown]
-# ## Question 3 — the curvature jump at one implied point (compute)
+# ## Question 3 — the curvature jump at one implied point (compute; practice: 0 points)
 #
 # On the bowl of your glyph, the outer contour has four consecutive stored points (font units,
 # printed below): $P_0$ (on-curve), $A$, $B$ (off-curve) and the next on-curve point $P_2$; between
@@ -196,6 +207,9 @@ check("hw05.q4", answer_q4)
 # control points of that B-spline's $n$ cubic segments, an array of shape `(n, 4, 2)`, in the
 # order from $V_0$ to $V_n$ (`cubic_beta_spline(points, 1.0, 0.0)` builds the B-spline; its
 # `.segments` are the Bézier polygons).
+#
+# **You may use:** numpy and `course_lib.beta_splines.cubic_beta_spline` (the B-spline itself);
+# the phantom vertices are the exercise.
 
 # %%
 def g2_run(V):
@@ -211,7 +225,7 @@ def g2_run(V):
 check("hw05.q5", g2_run)
 
 # %% [markdown]
-# ## Question 6 — your glyph made G2, corners kept (compute)
+# ## Question 6 — your glyph made G2, corners kept (compute; practice: 0 points)
 #
 # The outer contour of your glyph runs round the bowl from the corner where the bowl leaves the
 # stem to the corner where it meets the stem again, then along straight lines round the stem

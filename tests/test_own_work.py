@@ -1,0 +1,723 @@
+"""Points only for one's own work (issue 24): the library does not do a function exercise.
+
+For every function question of every homework, a submission that calls ``course_lib``'s
+implementation of it -- directly, through an alias bound before the check, through
+``importlib`` or ``getattr`` on the module, from another thread, after clearing the guard's
+state -- gets 0 for that question from the grader (the hidden test through ``LocalStudent``:
+the probe's own code, in-process) and a failing check, both with the one sentence
+"<implementation> is the exercise of <question>: write it yourself".  The honest solution keeps
+full marks.  One lazy notebook is also graded end to end in the sandboxed kernel.
+"""
+
+from __future__ import annotations
+
+import ast
+import functools
+import importlib
+import inspect
+import json
+import threading
+from pathlib import Path
+
+import numpy as np
+import pytest
+from _homework_support import VariantHomework, load
+
+from course_lib import own_work, variants
+from course_lib.checks import HOMEWORKS, check, questions, registry
+
+ROOT = Path(__file__).resolve().parents[1]
+HIDDEN = {
+    hw: load(f"hidden_{hw}_own_work", ROOT / "solutions" / "hidden_tests" / f"{hw}.py")
+    for hw in HOMEWORKS
+}
+
+from grading.protocol import LocalStudent, run_question  # noqa: E402  (path set by _homework_support)
+
+
+def _outline_of(P0, A, B, P2):
+    from course_lib.outlines import Outline, truetype_contour
+
+    pts = np.array([P0, A, B, P2], dtype=float)
+    return Outline((truetype_contour(pts, np.array([True, False, False, True])),), "one joint")
+
+
+#: question -> (module, implementation, how a lazy submission turns it into the answer)
+LAZY = {
+    "hw01.q2": (
+        "course_lib.reparametrization",
+        "faa_di_bruno",
+        lambda impl, q1, q2, f1, f2: impl(np.array([q1, q2]), np.array([f1, f2])),
+    ),
+    "hw02.q3": (
+        "course_lib.beta_constraints",
+        "solve_shape_parameters",
+        lambda impl, q, r, tol=1e-9: bool(
+            impl(np.array([q], float), np.array([r], float)).betas[0] > 0
+        ),
+    ),
+    "hw03.q2": ("course_lib.knot_splines", "bezier_points_from_g1", lambda impl, d, k: impl(d, k)),
+    "hw03.q7": ("course_lib.knot_splines", "knot_ratio_beta1", lambda impl, t: impl(t)),
+    "hw04.q2": (
+        "course_lib.stitching",
+        "g2_stitch_points",
+        lambda impl, V, b1, b2: impl(V, b1, b2),
+    ),
+    "hw04.q4": (
+        "course_lib.beta_splines",
+        "quadratic_beta_spline",
+        lambda impl, V, b: np.array(impl(V, b).segments),
+    ),
+    "hw05.q2": (
+        "course_lib.outlines",
+        "classify_joints",
+        lambda impl, P0, A, B, P2: bool(impl(_outline_of(P0, A, B, P2)).kind[1] == "G2"),
+    ),
+}
+
+
+def _lazy(qid: str, style: str):
+    """A student's answer to ``qid`` that calls the library's implementation, in ``style``."""
+    module_name, name, adapt = LAZY[qid]
+    if style == "direct":
+        impl = getattr(importlib.import_module(module_name), name)  # `from m import f` at the top
+        return lambda *a: adapt(impl, *a)
+    if style == "alias":
+        alias = getattr(importlib.import_module(module_name), name)  # `f = knot_ratio_beta1`
+
+        def answer(*a):
+            return adapt(alias, *a)
+
+        return answer
+    if style == "importlib":
+        return lambda *a: adapt(getattr(importlib.import_module(module_name), name), *a)
+    if style == "getattr":
+        module = importlib.import_module(module_name)
+        return lambda *a: adapt(getattr(module, name), *a)
+    if style == "wrapped":  # whatever a wrapper would hide: __wrapped__, a closure, __code__
+        impl = getattr(importlib.import_module(module_name), name)
+        inner = getattr(impl, "__wrapped__", impl)
+        return lambda *a: adapt(inner, *a)
+    if style == "thread":  # the call made on another thread
+
+        def in_thread(*a):
+            out = {}
+
+            def run():
+                try:
+                    out["value"] = adapt(getattr(importlib.import_module(module_name), name), *a)
+                except BaseException as exc:  # carried back to the caller
+                    out["error"] = exc
+
+            t = threading.Thread(target=run)
+            t.start()
+            t.join()
+            if "error" in out:
+                raise out["error"]
+            return out["value"]
+
+        return in_thread
+    if style == "cleared":  # the guard's process-wide state emptied inside the function
+
+        def cleared(*a):
+            own_work._ACTIVE.clear()
+            return adapt(getattr(importlib.import_module(module_name), name), *a)
+
+        return cleared
+    raise AssertionError(style)
+
+
+STYLES = ("direct", "alias", "importlib", "getattr", "wrapped", "thread", "cleared")
+
+
+def _function_questions() -> dict[str, str]:
+    """question -> answer name, for every registered question answered by a function."""
+    out = {}
+    for hw in HOMEWORKS:
+        for qid in questions(hw):
+            name = registry()[qid].answer_name
+            if not name.startswith("answer_"):
+                out[qid] = name
+    return out
+
+
+def _grade(qid: str, namespace: dict) -> tuple[float, str]:
+    hw, q = qid.split(".")
+    test = functools.partial(getattr(HIDDEN[hw], q), data=variants.data(hw, variants.DEFAULT))
+    return run_question(test, LocalStudent(namespace))
+
+
+def test_every_function_question_has_a_row_and_its_answer_name():
+    rows = {q: e.answer_name for q, e in own_work.EXERCISES.items()}
+    assert rows == _function_questions()
+    names = [e.answer_name for e in own_work.EXERCISES.values()]
+    assert len(set(names)) == len(names), "the probe finds the question by its answer name"
+
+
+def test_every_library_one_liner_of_the_table_is_guarded():
+    assert {q for q, e in own_work.EXERCISES.items() if e.implementations} == set(LAZY)
+    for qid, (module_name, name, _) in LAZY.items():
+        assert f"{module_name}.{name}" in own_work.EXERCISES[qid].implementations
+
+
+ALL_ROWS = [*own_work.EXERCISES.values(), *own_work.VALUE_EXERCISES.values()]
+
+
+@pytest.mark.parametrize("dotted", sorted({n for e in ALL_ROWS for n in e.implementations}))
+def test_every_implementation_starts_with_its_own_guard(dotted):
+    module_name, name = dotted.rsplit(".", 1)
+    func = getattr(importlib.import_module(module_name), name)
+    assert not hasattr(func, "__wrapped__") and func.__closure__ is None  # no unguarded original
+    tree = ast.parse(inspect.getsource(func).lstrip())
+    body = tree.body[0].body
+    first = (
+        body[1]
+        if isinstance(body[0], ast.Expr) and isinstance(body[0].value, ast.Constant)
+        else body[0]
+    )
+    assert ast.unparse(first) == f"own_work.require({dotted!r})"
+
+
+@pytest.mark.parametrize("style", STYLES)
+@pytest.mark.parametrize("qid", sorted(LAZY))
+def test_library_call_gets_zero_from_the_grader_and_fails_the_check(qid, style):
+    answer = _lazy(qid, style)
+    implementation = ".".join(LAZY[qid][:2])
+    sentence = own_work.exercise_message(implementation, qid)
+    assert sentence == f"{implementation} is the exercise of {qid}: write it yourself"
+    verdict = check(qid, answer)
+    assert not verdict.passed and verdict.message == sentence + ".", verdict.message
+    fraction, note = _grade(qid, {own_work.EXERCISES[qid].answer_name: answer})
+    assert fraction == 0.0 and sentence in note, note
+    assert not own_work._ACTIVE  # restored after the evaluation
+
+
+@pytest.mark.parametrize("qid", sorted(LAZY))
+def test_the_same_call_works_outside_an_evaluation(qid):
+    """The guard is what stops the one-liner: outside the check and the probe it answers."""
+    answer = _lazy(qid, "direct")
+    args = {
+        "hw01.q2": (np.array([1.0, 2.0]), np.array([0.0, 2.0]), 1.5, 1.0),
+        "hw02.q3": (np.array([1.0, 2.0]), np.array([2.0, 4.0])),
+        "hw03.q2": (np.arange(12.0).reshape(6, 2) ** 1.5, np.array([0.0, 1.0, 3.0])),
+        "hw03.q7": (np.array([0.0, 1.0, 3.0]),),
+        "hw04.q2": (np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 3.0], [4.0, 2.0]]), 1.5, 1.0),
+        "hw04.q4": (
+            np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]]),
+            np.array([1.0, 2.0, 0.5]),
+        ),
+        "hw05.q2": tuple(
+            np.array(p) for p in ([913.5, 877.5], [830.0, 993.0], [538.0, 993.0], [454.5, 877.5])
+        ),
+    }[qid]
+    assert answer(*args) is not None
+
+
+def test_state_set_before_the_check_does_not_switch_the_guard_off(monkeypatch):
+    """A notebook that empties the guard's state or the environment before its check."""
+    monkeypatch.setenv(own_work.ENV_VAR, "")
+    own_work._ACTIVE.clear()
+    from course_lib.knot_splines import knot_ratio_beta1 as alias
+
+    verdict = check("hw03.q7", alias)
+    assert "is the exercise of hw03.q7" in verdict.message
+    fraction, note = _grade("hw03.q7", {"knot_ratio_beta1": alias})
+    assert fraction == 0 and "is the exercise of hw03.q7" in note
+
+
+def test_a_child_process_inherits_the_exercise(tmp_path):
+    import subprocess
+    import sys
+
+    code = (
+        "import numpy as np\n"
+        "from course_lib.knot_splines import knot_ratio_beta1\n"
+        "print(knot_ratio_beta1(np.array([0.0, 1.0, 3.0])))\n"
+    )
+
+    def in_child(t):
+        run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+        if run.returncode:
+            raise RuntimeError(run.stderr.strip().splitlines()[-1])
+        return np.array([2.0] * (len(t) - 2))
+
+    verdict = check("hw03.q7", in_child)
+    assert "is the exercise of hw03.q7" in verdict.message
+
+
+def test_other_questions_and_plain_use_are_not_guarded():
+    """Outside an evaluation, and during another question's, the library works as always."""
+    from course_lib.knot_splines import bezier_points_from_g1
+
+    D = np.array([[0, 0], [1, 2], [2, 3], [4, 3], [5, 1], [6, 0]], dtype=float)
+    ref = bezier_points_from_g1(D, [0.0, 1.0, 3.0])
+
+    def knot_ratio_using_another_exercise(t):
+        bezier_points_from_g1(D, [0.0, 1.0, 3.0])  # hw03.q2's implementation, inside q7: allowed
+        h = np.diff(t)
+        return h[1:] / h[:-1]
+
+    assert check("hw03.q7", knot_ratio_using_another_exercise).passed
+    assert np.allclose(bezier_points_from_g1(D, [0.0, 1.0, 3.0]), ref)
+
+
+@pytest.fixture(scope="module")
+def solution_namespaces():
+    return {hw: VariantHomework(hw).solution_namespace(variants.DEFAULT) for hw in HOMEWORKS}
+
+
+@pytest.mark.parametrize("qid", sorted(own_work.EXERCISES))
+def test_the_honest_solution_keeps_full_marks(qid, solution_namespaces):
+    ns = solution_namespaces[qid.split(".")[0]]
+    name = own_work.EXERCISES[qid].answer_name
+    assert check(qid, ns[name]).passed
+    assert _grade(qid, ns)[0] == 1.0
+
+
+# ------------------------------------------------------------------ in the sandboxed kernel
+LAZY_CELLS = {
+    "knot_ratio_beta1": (
+        "from course_lib.knot_splines import knot_ratio_beta1 as _library_ratio\n"
+        "knot_ratio_beta1 = _library_ratio  # an alias bound before the check\n"
+    ),
+    "g1_bezier_control_points": (
+        "import importlib\n"
+        "def g1_bezier_control_points(d, knots):\n"
+        "    return importlib.import_module('course_lib.knot_splines').bezier_points_from_g1(d, knots)\n"
+    ),
+}
+
+
+@pytest.mark.slow
+@pytest.mark.timeout(300)
+def test_a_lazy_notebook_graded_in_the_sandbox(tmp_path):
+    import nbformat
+
+    grade = load("grade_own_work", ROOT / "tools" / "grade.py")
+    (solution,) = sorted((ROOT / "solutions").glob("hw03_*.ipynb"))
+    nb = nbformat.read(solution, as_version=4)
+    for cell in nb.cells:
+        for name, source in LAZY_CELLS.items():
+            if cell.cell_type == "code" and cell.source.lstrip().startswith(f"def {name}("):
+                cell.source = source
+    assert sum(c.source in LAZY_CELLS.values() for c in nb.cells) == 2
+    (q1,) = [c for c in nb.cells if c.cell_type == "code" and c.source.startswith("t0, t1, t2 =")]
+    q1.source = (  # a value question's one-liner: the cell raises in the kernel
+        "from course_lib.knot_splines import bezier_points_from_g1\n"
+        'answer_q1 = bezier_points_from_g1(D, DATA["q3"]["knots"]["a"])[3]\n'
+    )
+    subs = tmp_path / "subs"
+    subs.mkdir()
+    nbformat.write(nb, subs / "lazy.ipynb")
+    out = tmp_path / "out"
+    code = grade.main(
+        [
+            "--tests",
+            str(ROOT / "solutions/hidden_tests/hw03.py"),
+            "--submissions",
+            str(subs),
+            "--out",
+            str(out),
+            "--jobs",
+            "1",
+        ]
+    )
+    assert code == 0
+    (row,) = json.loads((out / "results.json").read_text(encoding="utf-8"))["results"]
+    points = row["points"]
+    # q3 and q5 call the lazy g1_bezier_control_points in their cells: the value guard stops it
+    lazy = ("q1", "q2", "q3", "q5", "q7")
+    assert all(points[q] == 0 for q in lazy), row
+    assert all(points[q] == p for q, p in HIDDEN["hw03"].POINTS.items() if q not in lazy), row
+    assert "`answer_q1` is not defined" in row["notes"]["q1"]
+    assert any(
+        "bezier_points_from_g1 is the exercise of hw03.q1, hw03.q3 and hw03.q5" in n
+        for n in row["run_notes"]
+    ), row["run_notes"]
+    assert (
+        "bezier_points_from_g1 is the exercise of hw03.q2: write it yourself" in row["notes"]["q2"]
+    )
+    assert "knot_ratio_beta1 is the exercise of hw03.q7: write it yourself" in row["notes"]["q7"]
+
+
+@pytest.mark.parametrize("hw", HOMEWORKS)
+def test_the_homework_text_states_the_rule_and_what_each_function_may_use(hw):
+    import nbformat
+
+    (path,) = sorted((ROOT / "exercises").glob(f"{hw}_*.ipynb"))
+    cells = [c.source for c in nbformat.read(path, as_version=4).cells if c.cell_type == "markdown"]
+    flat = [" ".join(c.replace("#", " ").split()) for c in cells]
+    assert "Your own work." in flat[0] and "write it yourself" in flat[0]
+    for qid, exercise in own_work.EXERCISES.items():
+        if qid.startswith(hw):
+            (text,) = [c for c in flat if f"Question {qid.split('.q')[1]} —" in c]
+            assert f"You may use:** {' '.join(exercise.may_use.split())}." in text
+            for name in exercise.implementations:
+                if not name.rsplit(".", 1)[1].startswith("_"):
+                    assert f"`{name}`" in text
+
+
+# ------------------------------------------------------------------ value questions
+def _notebook_namespace(hw: str) -> dict:
+    """The globals of a homework notebook after its Preparations cell."""
+    ns: dict = {"__name__": f"{hw}_own_work"}
+    exec(f"from course_lib.checks import check, check_all\nHOMEWORK = {hw!r}\n", ns)
+    return ns
+
+
+@pytest.mark.parametrize(
+    "qid, dotted",
+    sorted((q, n) for q, e in own_work.VALUE_EXERCISES.items() for n in e.implementations),
+)
+def test_a_value_question_s_library_call_raises_in_its_homework(qid, dotted):
+    """``answer_q1 = bezier_points_from_g1(D, knots)[3]`` in hw03 raises, in a cell, in a
+    function of the notebook and through exec; the same call in another homework does not."""
+    hw = qid.split(".")[0]
+    module_name, name = dotted.rsplit(".", 1)
+    ns = _notebook_namespace(hw)
+    ns["impl"] = impl = getattr(importlib.import_module(module_name), name)
+    required = [
+        p
+        for p in inspect.signature(impl).parameters.values()
+        if p.default is p.empty and p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)
+    ]
+    call = f"impl({', '.join(['None'] * len(required))})"
+    for source in (
+        call,
+        f"def helper():\n    return {call}\nhelper()",
+        f"exec({call!r}, {{'impl': impl}})",
+    ):
+        with pytest.raises(own_work.ExerciseError) as info:
+            exec(source, ns)
+        assert str(info.value).startswith(f"{dotted} is the exercise of ")
+        assert qid in str(info.value) and str(info.value).endswith(": write it yourself")
+    other = _notebook_namespace("hw00")
+    other["impl"] = ns["impl"]
+    with pytest.raises(Exception) as info:  # the library's own complaint about None, no guard
+        exec(call, other)
+    assert not isinstance(info.value, own_work.ExerciseError)
+
+
+# ------------------------------------------------------------------ a tracer around the checks
+RIGHT_TEXT = {"hw02.q4": "4*beta1*beta3 + 3*beta2**2", "hw03.q6": "3*(p4 - p2)/(t2 - t0)"}
+
+
+def _value_questions():
+    return [
+        (hw, qid)
+        for hw in HOMEWORKS
+        for qid in questions(hw)
+        if registry()[qid].answer_name.startswith("answer_")
+    ]
+
+
+def _numbers(obj, out: list, depth: int = 0) -> None:
+    """Every float inside ``obj`` (numbers, arrays, containers, a few levels deep)."""
+    if depth > 4:
+        return
+    if isinstance(obj, (bool, np.bool_)):
+        return
+    if isinstance(obj, (int, float, np.integer, np.floating)):
+        out.append(float(obj))
+    elif isinstance(obj, np.ndarray) and obj.dtype.kind in "if" and obj.size < 10_000:
+        out.extend(float(x) for x in obj.ravel())
+    elif isinstance(obj, (list, tuple)):
+        for x in obj[:1000]:
+            _numbers(x, out, depth + 1)
+    elif isinstance(obj, dict):
+        for x in list(obj.values())[:1000]:
+            _numbers(x, out, depth + 1)
+
+
+class Spy:
+    """A generic tracer (sys.settrace and sys.setprofile): every local and return value seen."""
+
+    def __init__(self) -> None:
+        self.seen: list[float] = []
+
+    def __call__(self, frame, event, arg):
+        for value in list(frame.f_locals.values()):
+            _numbers(value, self.seen)
+        if event == "return":
+            _numbers(arg, self.seen)
+        return self
+
+
+def _expected_numbers(hw: str, qid: str) -> list[float]:
+    """The components of the right answer that are not already numbers of the question's data."""
+    data = variants.data(hw, variants.DEFAULT)
+    name = registry()[qid].answer_name
+    right = HIDDEN[hw].answers_for(data)[name]
+    if isinstance(right, str):
+        return []  # a letter or a text: multiple choice (0 points) or symbolic (digests)
+    got: list[float] = []
+    _numbers(right, got)
+    given: list[float] = []
+    _numbers(data, given)
+    return [
+        x for x in got if x == x and not any(abs(x - g) <= 1e-9 * max(1, abs(x)) for g in given)
+    ]
+
+
+def _wrong_answer(hw: str, qid: str):
+    data = variants.data(hw, variants.DEFAULT)
+    right = HIDDEN[hw].answers_for(data)[registry()[qid].answer_name]
+    if qid in RIGHT_TEXT:
+        return "beta1 + t0"  # a symbolic answer of the wrong kind
+    if isinstance(right, str):
+        return "a"
+    if isinstance(right, dict):
+        return [np.full(np.shape(v), 0.123) for _, v in sorted(right.items())]
+    return np.full(np.shape(right), 0.123) if np.ndim(right) else 0.123
+
+
+@pytest.mark.parametrize("kind", ["settrace", "setprofile"])
+@pytest.mark.parametrize("hw, qid", _value_questions())
+def test_a_tracer_around_the_check_recovers_no_expected_value(hw, qid, kind):
+    import sys
+
+    spy = Spy()
+    wrong = _wrong_answer(hw, qid)  # made before the tracer: it holds the right answer's shape
+    install = sys.settrace if kind == "settrace" else sys.setprofile
+    install(spy)
+    try:
+        verdict = check(qid, wrong)
+    finally:
+        install(None)
+    assert not verdict.passed and "do not run under a tracer" in verdict.message
+    for x in _expected_numbers(hw, qid):
+        assert not any(abs(x - s) <= 1e-9 * max(1.0, abs(x)) for s in spy.seen), (qid, x)
+
+
+def test_the_tracer_test_can_fail(monkeypatch):
+    """Without the refusal the same tracer finds hw01.q7's arc length among the check's locals."""
+    import sys
+
+    monkeypatch.setattr("course_lib.checks._core._gettrace", lambda: None)
+    spy = Spy()
+    sys.settrace(spy)
+    try:
+        check("hw01.q7", 0.123)
+    finally:
+        sys.settrace(None)
+    (x,) = _expected_numbers("hw01", "hw01.q7")
+    assert any(abs(x - s) <= 1e-9 * abs(x) for s in spy.seen)
+
+
+@pytest.mark.parametrize("qid", ["hw03.q7", "hw05.q5"])
+def test_a_function_that_leaves_a_tracer_behind_is_refused(qid):
+    import sys
+
+    def answer(*args):
+        sys.settrace(Spy())
+        return np.zeros(3)
+
+    try:
+        verdict = check(qid, answer)
+    finally:
+        sys.settrace(None)
+    assert not verdict.passed and "do not run under a tracer" in verdict.message
+
+
+def test_no_check_module_has_a_helper_that_computes_an_answer():
+    """The helpers the issue found (and their kind) are gone from the checks modules."""
+    import course_lib.checks.hw01 as h1
+    import course_lib.checks.hw02 as h2
+    import course_lib.checks.hw03 as h3
+    import course_lib.checks.hw05 as h5
+
+    for module, name in [
+        (h1, "_parabola_length"),
+        (h1, "_parabola_derivatives"),
+        (h1, "_c1_derivative"),
+        (h2, "_chain_rule_coefficient"),
+        (h2, "_values_of"),
+        (h5, "_quad_end_curvatures"),
+        (h5, "_bspline_polygons"),
+        (h3, "bezier_points_from_g1"),
+    ]:
+        assert not hasattr(module, name), name
+
+
+@pytest.mark.parametrize(
+    "qid, text, digest_name",
+    [
+        ("hw02.q4", "4*beta1*beta3 + 3*beta2**2", "_Q4_RIGHT"),
+        ("hw02.q4", "4*beta1*beta2 + 3*beta2**2", "_Q4_TRANSCRIBED"),
+        ("hw03.q6", "3*(p4 - p2)/(t2 - t0)", "_Q6_RIGHT"),
+        ("hw03.q6", "3*(t1 - t0)*(p4 - p2)/(t2 - t0)", "_Q6_LOCAL"),
+    ],
+)
+def test_symbolic_digests_are_the_hand_derived_expressions_away_from_rounding(
+    qid, text, digest_name
+):
+    from course_lib import answers
+    from course_lib.checks import values_digest
+
+    module = importlib.import_module(f"course_lib.checks.{qid.split('.')[0]}")
+    q = qid.split(".")[1].upper()
+    symbols, points = getattr(module, f"_{q}_SYMBOLS"), getattr(module, f"_{q}_POINTS")
+    _, values = answers.evaluate(text, symbols, points, "x")
+    assert values_digest(qid, values) == getattr(module, digest_name)
+    for v in values:  # at least 1e-3 of the 10th digit away from a rounding boundary
+        mantissa = abs(complex(v).real) / 10 ** np.floor(np.log10(abs(complex(v).real)))
+        frac = (mantissa * 1e9) % 1
+        assert abs(frac - 0.5) > 1e-3
+
+
+# ------------------------------------------------------------------ feedback and hidden cases
+def _case_numbers(module) -> set[float]:
+    """Every number of a hidden-test file's case lists (``Q2_CASES``, ...), except 0..10."""
+    from fractions import Fraction
+
+    out: list[float] = []
+
+    def walk(obj):
+        if isinstance(obj, (list, tuple)):
+            for x in obj:
+                walk(x)
+        elif isinstance(obj, np.ndarray):
+            out.extend(float(x) for x in obj.ravel())
+        elif isinstance(obj, (int, float, Fraction)) and not isinstance(obj, bool):
+            out.append(float(obj))
+
+    for name in dir(module):
+        if name.endswith("_CASES"):
+            walk(getattr(module, name))
+    return {x for x in out if not (x == int(x) and 0 <= x <= 10)}
+
+
+@pytest.mark.parametrize("qid", sorted(own_work.EXERCISES))
+def test_feedback_names_no_hidden_input(qid):
+    """Wrong functions (the typical mistakes of test_answer_equivalence, and a constant) get notes
+    that describe the kind of case, never its inputs or its expected value."""
+    import re
+
+    from test_answer_equivalence import TABLE
+
+    hw = qid.split(".")[0]
+    name = own_work.EXERCISES[qid].answer_name
+    numbers = _case_numbers(HIDDEN[hw])
+
+    def constant(*args):
+        return np.zeros_like(np.asarray(args[0], dtype=float))
+
+    notes = []
+    for wrong in [*TABLE[qid][1], constant]:
+        if callable(wrong):
+            fraction, note = _grade(qid, {name: wrong})
+            if fraction < 1:
+                notes.append(note)
+    assert notes
+    for note in notes:
+        note = re.sub(r"(shape|to) \([\d, ]*\)", "", note)  # an array's shape is a kind of case
+        assert not re.search(r"[\(\[]\s*-?\d", note), note  # no point, vector or knot list
+        assert not re.search(r"=\s*-?\d", note), note  # no "β1 = 0.7"
+        for x in numbers:
+            assert f"{x:g}" not in note and repr(x) not in note, (note, x)
+
+
+# ------------------------------------------------------------------ one-liners, and the README
+#: Questions with points that no course_lib function computes (nothing to guard).
+NO_LIBRARY_ROUTE = {
+    "hw03.q6": "the closed form of the left derivative: no function of course_lib is symbolic here",
+    "hw05.q5": "the phantom vertices: cubic_beta_spline is allowed, the ends are the exercise",
+}
+
+
+def _readme_open_to_one_liners() -> set[str]:
+    import re
+
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    start = text.index("Open to a **one-liner**")
+    part = " ".join(text[start : text.index("worth **0 points**", start)].split())
+    listed, hw = set(), None
+    for token in re.findall(r"hw\d\d|q\d", part):
+        if token.startswith("hw"):
+            hw = token
+        else:
+            listed.add(f"{hw}.{token}")
+    return listed
+
+
+def test_the_readme_lists_exactly_the_questions_open_to_one_liners():
+    listed = _readme_open_to_one_liners()
+    zero = {f"{hw}.{q}" for hw in HOMEWORKS for q, p in HIDDEN[hw].POINTS.items() if p == 0}
+    assert listed == zero
+
+
+@pytest.mark.parametrize("hw", HOMEWORKS)
+def test_one_liners_score_only_the_open_points(hw):
+    """A submission made only of library calls and the right answers of the open questions."""
+    points, listed = HIDDEN[hw].POINTS, _readme_open_to_one_liners()
+    right = HIDDEN[hw].answers_for(variants.data(hw, variants.DEFAULT))
+    ns = _notebook_namespace(hw)
+    for q in points:
+        qid = f"{hw}.{q}"
+        name = registry()[qid].answer_name
+        if qid in listed:
+            ns[name] = right[name]  # a one-liner finds it: it is worth nothing
+        elif qid in LAZY:
+            ns[name] = _lazy(qid, "direct")
+        elif qid in own_work.VALUE_EXERCISES:
+            for dotted in own_work.VALUE_EXERCISES[qid].implementations:
+                module_name, attr = dotted.rsplit(".", 1)
+                ns["impl"] = impl = getattr(importlib.import_module(module_name), attr)
+                n = sum(
+                    p.default is p.empty and p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)
+                    for p in inspect.signature(impl).parameters.values()
+                )
+                with pytest.raises(own_work.ExerciseError):
+                    exec(f"{name} = impl({', '.join(['None'] * n)})", ns)
+        else:
+            assert qid in NO_LIBRARY_ROUTE, f"{qid}: how would a one-liner answer it?"
+    earned = sum(p * _grade(f"{hw}.{q}", ns)[0] for q, p in points.items())
+    assert earned <= sum(p for q, p in points.items() if f"{hw}.{q}" in listed) == 0
+
+
+# ------------------------------------------------------------------ a friend's notebook
+@pytest.mark.parametrize("hw", HOMEWORKS)
+def test_a_friends_notebook_scores_at_most_a_quarter(hw):
+    """The solution done with Ada's code, graded as Sophie's (her data): at most 25 % of the
+    points -- the data questions are Ada's numbers, and the questions that are the same for
+    everyone earn nothing in a notebook not done on one's own data."""
+    home = VariantHomework(hw)
+    points = home.hidden.POINTS
+    for ada, sophie in [(home.codes[0], home.codes[1]), (home.codes[2], home.codes[3])]:
+        ns = home.solution_namespace(ada)
+        data = variants.data(hw, sophie)
+        notes = {}
+        earned = 0.0
+        for q, p in points.items():
+            fraction, notes[q] = home.grade(q, ns, data)
+            earned += fraction * p
+        assert earned <= 0.25 * sum(points.values()), (hw, earned, notes)
+        for qid in own_work.EXERCISES:
+            if qid.startswith(hw):
+                assert "not done on your own data" in notes[qid.split(".")[1]]
+        # and on her own data the same notebook would have earned everything
+        assert all(home.grade(q, ns, variants.data(hw, ada))[0] == 1.0 for q in points)
+    variants.data(hw, variants.DEFAULT)
+
+
+@pytest.mark.parametrize("how", ["require", "module", "code"])
+def test_a_guard_switched_off_by_rebinding_costs_the_question(how, monkeypatch):
+    """The obvious ways to switch the guard off before the check, each one assignment."""
+    from course_lib import knot_splines
+
+    if how == "require":
+        monkeypatch.setattr(own_work, "require", lambda *a: None)
+    elif how == "module":
+        monkeypatch.setattr(knot_splines, "own_work", type("Fake", (), {"require": print}))
+    else:
+
+        def unguarded(knots):
+            h = np.diff(np.asarray(knots, dtype=float))
+            return h[1:] / h[:-1]
+
+        monkeypatch.setattr(knot_splines.knot_ratio_beta1, "__code__", unguarded.__code__)
+    answer = knot_splines.knot_ratio_beta1
+    verdict = check("hw03.q7", answer)
+    assert not verdict.passed and "guard of hw03.q7 was switched off" in verdict.message
+    fraction, note = _grade("hw03.q7", {"knot_ratio_beta1": answer})
+    assert fraction == 0 and "guard of hw03.q7 was switched off" in note
