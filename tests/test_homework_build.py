@@ -190,3 +190,14 @@ def test_notebook_layout(source, version):
     for c in cells:
         if c["cell_type"] == "code":
             assert c["outputs"] == [] and c["execution_count"] is None
+
+
+def test_the_example_variant_code_in_each_homework_is_a_valid_code():
+    """A student who copies the example to see the format gets the format right (check character)."""
+    from course_lib import variants
+
+    for src in sorted((ROOT / "tools" / "homework_src").glob("hw*.py")):
+        examples = re.findall(r'e\.g\. VARIANT = "([^"]+)"', src.read_text())
+        assert examples, f"{src.name}: no example code"
+        for code in examples:
+            assert variants.normalize(code) == code, src.name

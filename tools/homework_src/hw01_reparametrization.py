@@ -51,7 +51,7 @@ from course_lib import variants
 from course_lib.checks import check, check_all
 
 HOMEWORK = "hw01"
-VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "ABCDE23456"
+VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "KQW7MZP3XS"
 DATA = variants.data(HOMEWORK, VARIANT)
 
 # %% [markdown]

@@ -50,7 +50,7 @@ from course_lib.checks import check, check_all
 from course_lib.plotting import segment_color
 
 HOMEWORK = "hw02"
-VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "ABCDE23456"
+VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "KQW7MZP3XS"
 DATA = variants.data(HOMEWORK, VARIANT)
 beta1, beta2, beta3, beta4 = sp.symbols("beta1:5")
 

@@ -51,7 +51,7 @@ from course_lib import PiecewiseBezier, variants
 from course_lib.checks import check, check_all
 
 HOMEWORK = "hw03"
-VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "ABCDE23456"
+VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "KQW7MZP3XS"
 DATA = variants.data(HOMEWORK, VARIANT)
 
 # Finn's G1 control points d_-1, d_0, ..., d_6 for L = 3 segments (row j holds d_{j-1})

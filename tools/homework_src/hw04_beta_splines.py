@@ -45,7 +45,7 @@ from course_lib import PiecewiseBezier, variants
 from course_lib.checks import check, check_all
 
 HOMEWORK = "hw04"
-VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "ABCDE23456"
+VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "KQW7MZP3XS"
 DATA = variants.data(HOMEWORK, VARIANT)
 
 # %% [markdown]

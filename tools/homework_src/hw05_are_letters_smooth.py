@@ -55,7 +55,7 @@ from course_lib.outlines import Contour, Outline, classify_joints, glyph_outline
 from course_lib.plotting import plot_outline
 
 HOMEWORK = "hw05"
-VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "ABCDE23456"
+VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "KQW7MZP3XS"
 DATA = variants.data(HOMEWORK, VARIANT)
 
 # your glyph, coordinates in em (font units / units per em)
