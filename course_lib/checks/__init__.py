@@ -25,15 +25,9 @@ points), so an answer the check marks ✓ earns full points (``tests/test_answer
 
 Lecture notebooks ("check your understanding")
 ----------------------------------------------
-Lecture cells need no registration.  For a multiple-choice or short-answer question,
-store a *hash* of the right answer in the notebook (never the answer itself)::
-
-    from course_lib.checks import answer_hash, check_choice
-    answer_hash("b", salt="lecture03.q1")          # run once, privately -> '5f1e...'
-
-    my_answer = ...                                # the student's cell
-    check_choice("lecture03.q1", my_answer, "5f1e...")
-
+Lecture questions are practice and live in :mod:`course_lib.checks.lectures`: multiple choice
+with :func:`course_lib.checks.lectures.quiz` (no hash is stored in a notebook: with a handful of
+letter sets, a loop over the options would invert any hash, so the lectures do not pretend).
 Answers are compared case-, space- and order-insensitively (``"B, d"`` == ``["d", "b"]``).
 For a numeric answer in a lecture use :func:`course_lib.checks.lectures.check_number`
 (a plane vector: :func:`~course_lib.checks.lectures.check_vector`), whose expected value is
