@@ -259,9 +259,14 @@ def _evaluate_expression(value: Any, symbols: list, points: list) -> dict:
 
     expr = _as_sympy(value)
     if not isinstance(expr, sp.Expr) or getattr(expr, "is_Matrix", False):
-        raise Unsupported(
-            f"a symbolic answer must be a single expression, not a {type(expr).__name__}"
-        )
+        if isinstance(expr, sp.Equality):
+            what = "an equation (sp.Eq): give only the expression, e.g. the right-hand side"
+        elif getattr(expr, "is_Matrix", False):
+            what = "a matrix"
+        else:
+            kind = type(expr).__name__
+            what = f"{'an' if kind[:1].lower() in 'aeiou' else 'a'} {kind}"
+        raise Unsupported(f"a symbolic answer must be a single expression, not {what}")
     free = sorted({s.name for s in expr.free_symbols})
     values = None
     if set(free) <= set(symbols):

@@ -66,7 +66,7 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 
-from .. import answers
+from .. import answers, variants
 from ._core import (
     FAIL,
     UNANSWERED,
@@ -162,7 +162,21 @@ def check_all(namespace: Mapping[str, object], homework: str | None = None) -> R
             )
             continue
         verdicts.append(run_validate(qid, q.validate, namespace[q.answer_name]))
-    return Report(homework, tuple(verdicts))
+    return Report(homework, tuple(verdicts), _variant_notes(namespace, homework))
+
+
+def _variant_notes(namespace: object, homework: str) -> tuple[str, ...]:
+    """A warning when a homework with per-student variants is checked on the example data."""
+    if homework not in variants.generators() or not isinstance(namespace, Mapping):
+        return ()
+    code = namespace.get("VARIANT")
+    if isinstance(code, str) and not code.strip():
+        return (
+            "VARIANT is empty, so these checks use the example data. If your course hands out "
+            "variant codes, paste yours into the Preparations cell and run the notebook again: "
+            "you are graded on your own data.",
+        )
+    return ()
 
 
 def check_choice(question_id: str, answer: object, correct_hash: str) -> Verdict:

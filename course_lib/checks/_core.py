@@ -97,6 +97,7 @@ class Report:
 
     homework: str
     verdicts: tuple[Verdict, ...] = field(default_factory=tuple)
+    notes: tuple[str, ...] = ()  # what the student should know beyond the verdicts
 
     @property
     def all_passed(self) -> bool:
@@ -113,14 +114,19 @@ class Report:
         return f"{self.homework}: {self.n_passed} of {len(self.verdicts)} checks passed"
 
     def __str__(self) -> str:
-        return "\n".join([self._summary(), *(f"  {v}" for v in self.verdicts)])
+        notes = [f"  ⚠ {n}" for n in self.notes]
+        return "\n".join([self._summary(), *notes, *(f"  {v}" for v in self.verdicts)])
 
     def __repr__(self) -> str:
         return str(self)
 
     def _repr_html_(self) -> str:
         rows = "".join(v._repr_html_() for v in self.verdicts)
-        return f'<div class="cl-check-report"><p><b>{html.escape(self._summary())}</b></p>{rows}</div>'
+        notes = "".join(f"<p>⚠ {html.escape(n)}</p>" for n in self.notes)
+        return (
+            f'<div class="cl-check-report"><p><b>{html.escape(self._summary())}</b></p>'
+            f"{notes}{rows}</div>"
+        )
 
 
 #: Raised inside a check to turn a malformed answer into a failed verdict (``unanswered=True``

@@ -16,6 +16,7 @@ import numpy as np
 from .. import answers, variants
 from . import _variants_hw03  # registers the generator of hw03's data
 from ._core import (
+    AnswerProblem,
     as_choice,
     as_expression_values,
     as_vector,
@@ -52,6 +53,12 @@ def _joint_problem(p_prev, p_joint, p_next, a: float, b: float) -> str | None:
         return "the joint point is on the line but outside the segment p_{3i-1} p_{3i+1}."
     if abs(s - a / (a + b)) < 1e-9:
         return None
+    if abs(s - a / (a + b)) < 1e-3:
+        return (
+            "almost: the point is in the right place up to rounding, but not exactly -- compute it "
+            "from the data (DATA[...]) with full floating-point precision instead of typing "
+            "rounded numbers."
+        )
     if abs(s - b / (a + b)) < 1e-9:
         return (
             "the ratio is swapped: |p_{3i-1} p_{3i}| : |p_{3i} p_{3i+1}| must equal "
@@ -109,7 +116,13 @@ _Q2_CASES = [
 def _q2(func):
     for d, knots in _Q2_CASES:
         L = len(knots) - 1
-        res = call_answer(func, d.copy(), np.array(knots), name="g1_bezier_control_points")
+        try:
+            res = call_answer(func, d.copy(), np.array(knots), name="g1_bezier_control_points")
+        except AnswerProblem as exc:
+            if exc.unanswered:
+                raise
+            case = f"with knots {knots} ({d.shape[1]}-D points, {L} segments)"
+            raise AnswerProblem(f"{case}: {exc.message}") from None
         p = as_vector(
             res,
             (3 * L + 1, d.shape[1]),
@@ -164,7 +177,10 @@ def _q5(answer):
             "1 / (t_i - t_{i-1}) multiplies it."
         )
     if close(v[0], v[1]):
-        return fail("your two derivatives agree, but they are not the spline's: recompute p_3 first.")
+        return fail(
+            "your two derivatives agree with each other, but they are not this spline's at t_1: "
+            "check which control points and which knot interval each one-sided derivative uses."
+        )
     return fail("not the one-sided derivatives at t_1: differentiate each cubic segment in t.")
 
 

@@ -151,9 +151,14 @@ def _q3(answer):
         return fail(
             "both sides are equal in your answer, but the curvature jumps at this implied point."
         )
+    if any(close(got, k * right) for k in (2.0, 0.5, 4.0, 0.25)):
+        return fail(
+            "a constant factor is off: the end derivatives of a Bézier curve carry its degree "
+            "(here 2) as a factor, in x′ and in x″."
+        )
     return fail(
-        "not the signed curvatures: use the end derivatives of a quadratic Bézier curve, "
-        "x′(1) = 2 (M − A), x″(1) = 2 (P0 − 2A + M), and x′(0) = 2 (B − M), x″(0) = 2 (M − 2B + P2)."
+        "not the signed curvatures at the implied point: use the end derivatives of each "
+        "quadratic Bézier segment that meets there (lecture 3, signed curvature)."
     )
 
 
