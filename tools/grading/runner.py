@@ -107,6 +107,7 @@ class Result:
     manifest_student: str | None = None  # the student id written by submit(), if any
     submitted: str | None = None  # ISO time used for the late rule
     time_source: str = "none"  # "manifest", "file" or "none"
+    file_time: str | None = None  # the file's own time (shown apart from the LMS's verdict)
     days_late: int = 0
     penalty: float = 0.0  # fraction of the points lost for lateness
     lms: dict | None = None  # the roster entry: id, name, email
