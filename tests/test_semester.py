@@ -88,8 +88,13 @@ def hand_in_from_the_notebook(path: Path, student: str) -> Path:
     nbformat.write(nb, path)
     NotebookClient(nb, timeout=120, kernel_name="python3",
                    resources={"metadata": {"path": str(path.parent)}}).execute()  # fmt: skip
-    shown = "".join(str(o.get("data", {}).get("text/markdown", "")) for o in nb.cells[-1].outputs)
+    outputs = nb.cells[-1].outputs
+    shown = "".join(str(o.get("text", "")) for o in outputs if o.get("name") == "stdout")
+    shown += "".join(str(o.get("data", {}).get("text/markdown", "")) for o in outputs)
     assert "Submission written" in shown and "7 of 7 checks pass" in shown, shown
+    assert shown.count("Submission written") == 1, shown  # printed once, not shown again
+    everything = json.dumps(outputs)
+    assert "Submission(" not in everything and "without encryption" not in everything, everything
     return path.parent.parent / "submissions" / f"{HW}-{student}.ipynb"
 
 
@@ -213,7 +218,7 @@ def test_every_flag_is_where_the_instructor_looks_first(semester):
     assert all("same variant code" in line for line in honest)  # Jane: only as the code's owner
     assert not [line for line in flags.values() if "1002" in line and "Late" not in line]
     results = _results(out)
-    assert results["1004"]["status"] == "ok; edited after submit; file time after deadline"
+    assert results["1004"]["status"] == "ok; edited after submit"  # his submit() time agrees
     assert results["1004"]["penalty"] == 0  # Canvas said on time: no penalty
     assert results["1002"]["status"] == "ok; late"
     assert "wrong variant code" in results["1005"]["status"]

@@ -297,12 +297,13 @@ def time_flags(found: Found, deadline: datetime | None) -> tuple[datetime | None
         else:
             when = min(found.mtime, deadline) if found.mtime else deadline
             if found.mtime is not None and found.mtime > deadline:
-                flags.append(FILE_TIME_AFTER)
                 notes.append(
                     f"the file's time {found.mtime.isoformat(timespec='seconds')} is after the "
                     "deadline, but Canvas marked the upload on time: Canvas's verdict is used "
-                    "(no penalty)"
+                    "(no penalty; a file's time can also be when it was unpacked)"
                 )
+                if m_time is None:  # no submit() time backs Canvas's verdict up: have a look
+                    flags.append(FILE_TIME_AFTER)
         if m_time is not None and (m_time > deadline) != found.lms_late:
             flags.append(TIMES_DISAGREE)
             notes.append(
