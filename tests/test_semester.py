@@ -109,11 +109,19 @@ def semester(tmp_path_factory):
     run("tools/variant.py", "codes", HW, "--secret-file", str(course / "course_secret.txt"),
         "--roster", str(course / "gradebook.csv"), "--out", str(course / "codes.csv"))  # fmt: skip
     with open(course / "codes.csv", newline="", encoding="utf-8") as fh:
-        codes = {row["id"]: row["code"] for row in csv.DictReader(fh)}
-    assert sorted(codes) == ["1001", "1002", "1003", "1004", "1005", "1006"]
+        rows = list(csv.DictReader(fh))
+    codes = {row["id"]: row["code"] for row in rows}
+    assert sorted(codes) == ["1001", "1002", "1003", "1004", "1005", "1006"]  # no Test Student
+    # what the instructor tells each student: the code and the id to hand in with
+    assert rows[0]["tell_the_student"].startswith(f"{HW}: your variant code is {codes['1001']}")
+    assert "STUDENT=1001" in rows[0]["tell_the_student"]
     # the student edition, as make release builds it
     run(sys.executable, "tools/release.py", "--out", str(base / "dist" / "student-edition"))
     edition = base / "dist" / "student-edition"
+    told = "the id your instructor gave you with your variant code"
+    assert told in " ".join((edition / "README.md").read_text(encoding="utf-8").split())
+    hand_in = nbformat.read(edition / "exercises" / NAME, as_version=4).cells[-1].source
+    assert told.replace("the id your", "id your") in " ".join(hand_in.split())
 
     students = base / "students"
     handed = {}
@@ -343,3 +351,15 @@ def test_an_assignment_the_canvas_export_lacks_stops_before_grading(tmp_path):
         assert '"Homework 1 (12345)"; "Homework 2 (12346)"' in message, message
         assert "Current Score" not in message and "nothing was graded" in message
         assert not (tmp_path / "out").exists()
+
+
+def test_the_student_data_the_readme_names_is_git_ignored():
+    """README, "Where student data lives": rosters, codes and grades are never committed."""
+    paths = ["codes.csv", "codes-hw01.csv", "roster.csv", "gradebook.csv", "worksheet.csv",
+             "course_secret.txt", "grades/hw01/scores.csv", "grading-output/hw01/scores.csv",
+             "submissions/hw01-1001.ipynb"]  # fmt: skip
+    done = subprocess.run(["git", "check-ignore", "--no-index", *paths], cwd=ROOT,
+                          capture_output=True, text=True)  # fmt: skip
+    assert sorted(done.stdout.split()) == sorted(paths), done.stdout
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    assert all(f"`{p}`" in readme for p in ("codes*.csv", "roster*.csv", "grades/"))
