@@ -62,7 +62,8 @@ the code the solution notebook calls.
 Gradebooks
 ----------
 ``--roster`` maps submissions to LMS ids; ``--format plain|canvas|moodle`` chooses the layout of
-``scores.csv``; ``--deadline`` and ``--late-penalty`` apply a late rule (stated in every feedback
+``scores.csv``; ``--assignment NAME`` picks a Canvas export's column (its exact header, "(id)"
+included; points scaled to its "Points Possible"); ``--deadline`` and ``--late-penalty`` apply a late rule (stated in every feedback
 file); ``--only STUDENT`` regrades one student and merges the row; ``--executor dask`` grades on a
 Dask cluster (``--scheduler``).  See ``tools/grading/reports.py`` and the README.
 
