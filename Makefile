@@ -49,15 +49,16 @@ bench: install
 # make grade HW=hw01 SUBMISSIONS=path/to/submitted/notebooks OUT=grades/hw01
 #      [ROSTER=roster.csv] [SECRET=course_secret.txt] [FORMAT=plain|canvas|moodle]
 #      [DEADLINE=2026-12-08T23:59+01:00] [PENALTY=10%] [EXECUTOR=local|dask] [ONLY=student]
+#      [ASSIGNMENT="Homework 1"]  (the Canvas export's column to fill, with or without its "(id)")
 HW ?= hw01
 OUT ?= grading-output/$(HW)
 GRADE_OPTS = $(if $(ROSTER),--roster "$(ROSTER)") $(if $(SECRET),--secret-file "$(SECRET)") \
 	$(if $(FORMAT),--format $(FORMAT)) $(if $(DEADLINE),--deadline "$(DEADLINE)") \
 	$(if $(PENALTY),--late-penalty "$(PENALTY)") $(if $(EXECUTOR),--executor $(EXECUTOR)) \
-	$(if $(ONLY),--only "$(ONLY)")
+	$(if $(ONLY),--only "$(ONLY)") $(if $(ASSIGNMENT),--assignment "$(ASSIGNMENT)")
 grade: install
 	@bash tools/ensure-sandbox || true
-	@test -n "$(SUBMISSIONS)" || (echo "usage: make grade HW=hw01 SUBMISSIONS=DIR [OUT=DIR] [ROSTER=.. SECRET=.. FORMAT=.. DEADLINE=.. PENALTY=.. EXECUTOR=..]"; exit 2)
+	@test -n "$(SUBMISSIONS)" || (echo "usage: make grade HW=hw01 SUBMISSIONS=DIR [OUT=DIR] [ROSTER=.. SECRET=.. FORMAT=.. ASSIGNMENT=.. DEADLINE=.. PENALTY=.. EXECUTOR=..]"; exit 2)
 	$(BIN)/python tools/grade.py --tests solutions/hidden_tests/$(firstword $(subst _, ,$(HW))).py \
 	    --submissions "$(SUBMISSIONS)" --out "$(OUT)" --jobs 2 $(GRADE_OPTS)
 

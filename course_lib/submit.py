@@ -25,6 +25,8 @@ import hashlib
 import json
 import os
 import re
+import sys
+import tempfile
 from dataclasses import dataclass, field
 from datetime import datetime, timezone
 from pathlib import Path
@@ -95,7 +97,41 @@ def manifest_of(nb: dict) -> dict | None:
     }
 
 
-@dataclass
+def ordinal(n: int) -> str:
+    """``1st``, ``2nd``, ``3rd``, ``11th``, ``21st`` ..."""
+    suffix = "th" if 10 <= n % 100 <= 20 else {1: "st", 2: "nd", 3: "rd"}.get(n % 10, "th")
+    return f"{n}{suffix}"
+
+
+def describe_cell(code_number: int, position: int, source: str) -> str:
+    """A code cell as a student finds it in JupyterLab: ``code cell 14 (the 21st cell of the
+    notebook, starting `assert ...`)``; ``code_number`` and ``position`` count from 1."""
+    first = next((line.strip() for line in source.splitlines() if line.strip()), "")
+    if len(first) > 60:
+        first = first[:57] + "..."
+    start = f", starting `{first}`" if first else ""
+    return f"code cell {code_number} (the {ordinal(position)} cell of the notebook{start})"
+
+
+def error_text(ename: object, evalue: object, limit: int = 200) -> str:
+    """``AssertionError: message``, or just ``AssertionError`` when there is no message."""
+    value = str(evalue or "").strip()[:limit]
+    return f"{ename or 'Error'}: {value}" if value else str(ename or "Error")
+
+
+#: a log line of the kernel's own start-up that is no business of a student's (ipykernel >= 7)
+_KERNEL_NOISE = ("Kernel is running over TCP without encryption",)
+
+
+def _echo_kernel_log(data: bytes) -> None:
+    """The hand-in kernel's stderr, without the start-up warning about TCP transport."""
+    text = data.decode("utf-8", "replace")
+    kept = [line for line in text.splitlines() if line.strip() and not any(n in line for n in _KERNEL_NOISE)]
+    if kept:
+        print("\n".join(kept), file=sys.stderr)
+
+
+@dataclass(repr=False)
 class Submission:
     path: Path | None
     student: str
@@ -104,6 +140,18 @@ class Submission:
     #: what the checks said in the fresh run: "5 of 7 checks pass; q3 not answered yet; ..."
     checked: str = ""
     skipped: bool = False  # submit() was called while a submission was being made
+    #: submit() printed the summary already (a notebook cell does not show it twice)
+    printed: bool = field(default=False, compare=False)
+
+    def __repr__(self) -> str:
+        return str(self)
+
+    def _ipython_display_(self) -> None:
+        if self.printed:  # submit() printed it in this cell already
+            return
+        from IPython.display import Markdown, display
+
+        display(Markdown(self._repr_markdown_()))
 
     def _repr_markdown_(self) -> str:
         if self.skipped:
@@ -186,7 +234,12 @@ def submit(
     before = os.environ.get(SUBMITTING_ENV)
     os.environ[SUBMITTING_ENV] = "1"  # the kernel inherits it: a nested submit() does nothing
     try:
-        client.execute()
+        with tempfile.TemporaryFile() as log:  # the kernel's own start-up log
+            try:
+                client.execute(stderr=log)
+            finally:
+                log.seek(0)
+                _echo_kernel_log(log.read())
     finally:
         if before is None:
             os.environ.pop(SUBMITTING_ENV, None)
@@ -199,15 +252,14 @@ def submit(
         nb.cells[k].execution_count = None
     failed = []
     number = 0
-    for cell in nb.cells:
+    for position, cell in enumerate(nb.cells, start=1):
         if cell.cell_type != "code":
             continue
         number += 1
         for out in cell.get("outputs", []):
             if out.get("output_type") == "error":
-                failed.append(
-                    f"code cell {number}: {out.get('ename')}: {str(out.get('evalue'))[:120]}"
-                )
+                where = describe_cell(number, position, cell.source)
+                failed.append(f"{where}: {error_text(out.get('ename'), out.get('evalue'), 120)}")
                 break
     nb.metadata[MANIFEST_KEY] = {
         "student": student,
@@ -220,7 +272,10 @@ def submit(
     target_dir.mkdir(parents=True, exist_ok=True)
     target = target_dir / f"{homework}-{student}.ipynb"
     nbformat.write(nb, target)
-    return Submission(target, student, homework, failed, checked)
+    result = Submission(target, student, homework, failed, checked)
+    print(result)  # the same summary from a notebook cell as from `make submit`
+    result.printed = True
+    return result
 
 
 def _checked(cell, homework: str) -> str:
@@ -282,8 +337,7 @@ def main(argv: list[str] | None = None) -> int:
     except ValueError as exc:
         print(f"submit: {exc}")
         return 2
-    print(result)
-    return 0
+    return 0 if result.path is not None else 1
 
 
 if __name__ == "__main__":

@@ -79,15 +79,28 @@ def test_submit_writes_a_manifest_and_reports_failed_cells(course):
     assert notebook_digest(nb) != nb.metadata["course_submission"]["sha256"]
 
 
-def test_submit_lists_the_cells_that_fail_in_a_fresh_kernel(tmp_path):
+def test_submit_lists_the_cells_that_fail_in_a_fresh_kernel(tmp_path, capsys):
     nb = nbformat.v4.new_notebook(cells=[
         nbformat.v4.new_code_cell('HOMEWORK = "hw01"'),
         nbformat.v4.new_code_cell("answer_q1 = undefined_name"),
+        nbformat.v4.new_markdown_cell("## q2"),
+        nbformat.v4.new_code_cell("\nassert 1 == 2"),
     ])  # fmt: skip
     nbformat.write(nb, tmp_path / "mine.ipynb")
     sub = submit(tmp_path / "mine.ipynb", student="s9", out_dir=tmp_path / "out")
-    assert sub.failed_cells == ["code cell 2: NameError: name 'undefined_name' is not defined"]
-    assert "1 cell(s) raised an error" in str(sub)
+    # as JupyterLab shows the cell: its place in the notebook and its first line; no empty ": "
+    assert sub.failed_cells == [
+        "code cell 2 (the 2nd cell of the notebook, starting `answer_q1 = undefined_name`): "
+        "NameError: name 'undefined_name' is not defined",
+        "code cell 3 (the 4th cell of the notebook, starting `assert 1 == 2`): AssertionError",
+    ]
+    assert "2 cell(s) raised an error" in str(sub)
+    # from a notebook cell as from `make submit`: the summary is printed, never a bare repr,
+    # and the hand-in kernel's TCP start-up warning is not shown
+    shown = capsys.readouterr()
+    assert "Submission written" in shown.out and "2 cell(s) raised an error" in shown.out
+    assert "without encryption" not in shown.err
+    assert not repr(sub).startswith("Submission(") and "Submission written" in repr(sub)
 
 
 def test_submit_refuses_a_bad_student_id(course):

@@ -149,9 +149,34 @@ def test_import_files_hold_only_matched_students_with_the_lms_ids(tmp_path):
                         fractions=dict.fromkeys(tests.points, 1.0))  # fmt: skip
     full.lms = asdict(roster["1001"])
     stray = grade.Result("x_1", dict.fromkeys(tests.points, 0.0), dict.fromkeys(tests.points, ""))
-    rows = list(csv.reader(reports.scores_table([full, stray], tests, "canvas", roster, "hw01").splitlines()))
+    column = reports.canvas_column(roster, "hw01")  # the export's header, "(id)" and all
+    top = reports.lms_maximum(roster, "canvas", column)
+    rows = list(csv.reader(reports.scores_table([full, stray], tests, "canvas", roster, column, top).splitlines()))
     assert rows[0] == ["Student", "ID", "SIS User ID", "SIS Login ID", "Section", "hw01 (4711)"]
     assert rows[2] == ["Doe, Jane", "12345", "1001", "jdoe", "Section A", "11"] and len(rows) == 3
+    # out of 100 in Canvas: the homework's 11 points are scaled to it
+    scaled = list(csv.reader(reports.scores_table([full], tests, "canvas", roster, column, 100.0).splitlines()))
+    assert scaled[1][5] == "100" and scaled[2][5] == "100"
+    assert "11/11 → 100/100 in Canvas" in reports.feedback_markdown(full, tests, None, ("Canvas", 100.0))
+
+
+def test_the_canvas_column_is_found_by_name_with_or_without_its_id_and_the_test_student_skipped(tmp_path):
+    (tmp_path / "g.csv").write_text(
+        "Student,ID,SIS User ID,SIS Login ID,Section,Homework 1 (12345),Homework 2 (12346),"
+        "Current Score,Final Score\n"
+        "    Points Possible,,,,,100.00,50.00,(read only),(read only)\n"
+        '"Doe, Jane",20001,1001,jdoe,A,,,,\n'
+        '"Student, Test",20099,,,A,,,,\n',
+        encoding="utf-8",
+    )
+    roster = reports.read_roster(tmp_path / "g.csv")
+    assert list(roster) == ["1001"]  # Canvas's Test Student is no student
+    assert reports.canvas_assignments(roster) == ["Homework 1 (12345)", "Homework 2 (12346)"]
+    for name in ("Homework 1", "homework 1", "Homework 1 (12345)"):
+        assert reports.canvas_column(roster, name) == "Homework 1 (12345)"
+    assert reports.canvas_column(roster, "hw01") is None
+    assert reports.canvas_column(roster, "Current Score") is None
+    assert reports.lms_maximum(roster, "canvas", "Homework 2 (12346)") == 50
 
 
 @pytest.mark.parametrize("bad", ["id,name\n,Jane\n", "name\nJane\n"])
@@ -216,3 +241,17 @@ def test_a_roster_with_a_submission_column_still_matches_submit_manifests(tmp_pa
     notebook(tmp_path / "subs" / "emmy.ipynb", variants.code_for(SECRET, "hw01", "1002"), "1002")
     items = grade.plan(tmp_path / "subs", roster, homework="hw01", secret=SECRET, variants_on=True)
     assert [(i.student, i.who.entry.id, i.who.flags) for i in items] == [("ada", "1001", []), ("emmy", "1002", [])]
+
+
+def test_a_file_dated_after_the_deadline_canvas_calls_on_time_is_noted_not_penalised(tmp_path):
+    """Canvas (no LATE mark) decides; the file's real time is kept and said, never the deadline."""
+    after = DEADLINE + timedelta(hours=5)
+    for student, flagged in ((None, True), ("1001", False)):  # a submit() time backs Canvas up
+        f = identity.read_notebook_facts(identity.parse_name(Path("doejane_12345_4_hw01-1001.ipynb")))
+        f.path = notebook(tmp_path / f"{student}.ipynb", "", student, DEADLINE - timedelta(hours=1))
+        touch(f.path, after)
+        f = identity.read_notebook_facts(f)
+        when, source, flags, notes = identity.time_flags(f, DEADLINE)
+        assert when <= DEADLINE and source == "Canvas: on time"
+        assert flags == ([identity.FILE_TIME_AFTER] if flagged else [])
+        assert after.isoformat(timespec="seconds") in notes[0] and "Canvas's verdict is used" in notes[0]

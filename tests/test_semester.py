@@ -37,16 +37,19 @@ HW, NAME, FULL = "hw01", "hw01_reparametrization.ipynb", 11
 
 pytestmark = [pytest.mark.slow, pytest.mark.timeout(600)]
 
-GRADEBOOK = (  # Canvas: Grades > Export, as downloaded (with its "Points Possible" row)
-    "Student,ID,SIS User ID,SIS Login ID,Section,hw01 (4711),Current Score,Final Score\n"
-    "    Points Possible,,,,,11.00,(read only),(read only)\n"
-    '"Doe, Jane",20001,1001,jdoe,Geometry A,,,\n'
-    '"Roe, Rick",20002,1002,rroe,Geometry A,,,\n'
-    '"Poe, Ann",20003,1003,apoe,Geometry A,,,\n'
-    '"Lee, Tom",20004,1004,tlee,Geometry B,,,\n'
-    '"Fox, Sam",20005,1005,sfox,Geometry B,,,\n'
-    '"Kim, Mia",20006,1006,mkim,Geometry B,,,\n'
+GRADEBOOK = (  # Canvas: Grades > Export, as downloaded (its "Points Possible" row, its Test Student)
+    "Student,ID,SIS User ID,SIS Login ID,Section,Homework 1 (12345),Homework 2 (12346),"
+    "Current Score,Final Score\n"
+    "    Points Possible,,,,,100.00,100.00,(read only),(read only)\n"
+    '"Doe, Jane",20001,1001,jdoe,Geometry A,,,,\n'
+    '"Roe, Rick",20002,1002,rroe,Geometry A,,,,\n'
+    '"Poe, Ann",20003,1003,apoe,Geometry A,,,,\n'
+    '"Lee, Tom",20004,1004,tlee,Geometry B,,,,\n'
+    '"Fox, Sam",20005,1005,sfox,Geometry B,,,,\n'
+    '"Kim, Mia",20006,1006,mkim,Geometry B,,,,\n'
+    '"Student, Test",20099,,,Geometry A,,,,\n'
 )
+CANVAS_MAX = 100  # the export's Points Possible for "Homework 1 (12345)"
 
 
 def run(*cmd: str, cwd: Path = ROOT) -> str:
@@ -85,8 +88,13 @@ def hand_in_from_the_notebook(path: Path, student: str) -> Path:
     nbformat.write(nb, path)
     NotebookClient(nb, timeout=120, kernel_name="python3",
                    resources={"metadata": {"path": str(path.parent)}}).execute()  # fmt: skip
-    shown = "".join(str(o.get("data", {}).get("text/markdown", "")) for o in nb.cells[-1].outputs)
+    outputs = nb.cells[-1].outputs
+    shown = "".join(str(o.get("text", "")) for o in outputs if o.get("name") == "stdout")
+    shown += "".join(str(o.get("data", {}).get("text/markdown", "")) for o in outputs)
     assert "Submission written" in shown and "7 of 7 checks pass" in shown, shown
+    assert shown.count("Submission written") == 1, shown  # printed once, not shown again
+    everything = json.dumps(outputs)
+    assert "Submission(" not in everything and "without encryption" not in everything, everything
     return path.parent.parent / "submissions" / f"{HW}-{student}.ipynb"
 
 
@@ -101,11 +109,19 @@ def semester(tmp_path_factory):
     run("tools/variant.py", "codes", HW, "--secret-file", str(course / "course_secret.txt"),
         "--roster", str(course / "gradebook.csv"), "--out", str(course / "codes.csv"))  # fmt: skip
     with open(course / "codes.csv", newline="", encoding="utf-8") as fh:
-        codes = {row["id"]: row["code"] for row in csv.DictReader(fh)}
-    assert sorted(codes) == ["1001", "1002", "1003", "1004", "1005", "1006"]
+        rows = list(csv.DictReader(fh))
+    codes = {row["id"]: row["code"] for row in rows}
+    assert sorted(codes) == ["1001", "1002", "1003", "1004", "1005", "1006"]  # no Test Student
+    # what the instructor tells each student: the code and the id to hand in with
+    assert rows[0]["tell_the_student"].startswith(f"{HW}: your variant code is {codes['1001']}")
+    assert "STUDENT=1001" in rows[0]["tell_the_student"]
     # the student edition, as make release builds it
     run(sys.executable, "tools/release.py", "--out", str(base / "dist" / "student-edition"))
     edition = base / "dist" / "student-edition"
+    told = "the id your instructor gave you with your variant code"
+    assert told in " ".join((edition / "README.md").read_text(encoding="utf-8").split())
+    hand_in = nbformat.read(edition / "exercises" / NAME, as_version=4).cells[-1].source
+    assert told.replace("the id your", "id your") in " ".join(hand_in.split())
 
     students = base / "students"
     handed = {}
@@ -139,23 +155,27 @@ def semester(tmp_path_factory):
         zf.extractall(subs)
     later = (now + timedelta(minutes=5)).timestamp()
     os.utime(subs / "poeann_20003_70003_hw01-1003.ipynb", (later, later))  # the blank is newest by file time
+    # Tom's file is dated after the deadline, but Canvas did not mark it LATE: Canvas decides
+    os.utime(subs / "leetom_20004_70004_hw01-1004.ipynb", (later, later))
 
     deadline = deadline.isoformat(timespec="seconds")
     out = course / "grades" / HW
     grade = ("tools/grade.py", "--tests", f"solutions/hidden_tests/{HW}.py", "--submissions", str(subs),
              "--out", str(out), "--jobs", "2", "--roster", str(course / "gradebook.csv"),
              "--secret-file", str(course / "course_secret.txt"), "--format", "canvas",
-             "--deadline", deadline, "--late-penalty", "10%")  # fmt: skip
+             "--deadline", deadline, "--late-penalty", "10%", "--assignment", "Homework 1")  # fmt: skip
     console = run(*grade)
+    tom_file_time = datetime.fromtimestamp(later, timezone.utc).isoformat(timespec="seconds")
     return {"out": out, "subs": subs, "codes": codes, "grade": grade, "console": console,
-            "handed": handed, "blank": blank.path, "course": course, "deadline": deadline}  # fmt: skip
+            "handed": handed, "blank": blank.path, "course": course, "deadline": deadline,
+            "tom_file_time": tom_file_time}  # fmt: skip
 
 
 def _canvas_rows(out: Path) -> tuple[list[str], list[list[str]]]:
     """scores.csv as Canvas's gradebook import reads it: a header, "Points Possible", students."""
     with open(out / "scores.csv", newline="", encoding="utf-8") as fh:
         rows = list(csv.reader(fh))
-    assert rows[1][0].strip() == "Points Possible" and rows[1][5] == "11"
+    assert rows[1][0].strip() == "Points Possible" and rows[1][5] == f"{CANVAS_MAX}"
     return rows[0], rows[2:]
 
 
@@ -166,14 +186,16 @@ def _results(out: Path) -> dict[str, dict]:
 
 def test_the_import_file_reimports_into_canvas(semester):
     header, rows = _canvas_rows(semester["out"])
-    assert header == ["Student", "ID", "SIS User ID", "SIS Login ID", "Section", "hw01 (4711)"]
+    # the export's own column, "(id)" and all: Canvas's import matches on the header
+    assert header == ["Student", "ID", "SIS User ID", "SIS Login ID", "Section", "Homework 1 (12345)"]
     by_canvas_id = {r[1]: r for r in rows}
     # only roster students, with Canvas's own ids and the export's SIS columns
     assert sorted(by_canvas_id) == ["20001", "20002", "20003", "20004", "20005"]
     assert by_canvas_id["20001"][:5] == ["Doe, Jane", "20001", "1001", "jdoe", "Geometry A"]
     scores = {r[2]: float(r[5]) for r in rows}
-    assert scores["1001"] == FULL and scores["1003"] == FULL and scores["1004"] == FULL
-    assert scores["1002"] == pytest.approx(FULL * 0.9)  # Canvas said LATE: one started day
+    # 11/11 in the homework is 100/100 in Canvas (the export's Points Possible)
+    assert scores["1001"] == CANVAS_MAX and scores["1003"] == CANVAS_MAX and scores["1004"] == CANVAS_MAX
+    assert scores["1002"] == pytest.approx(CANVAS_MAX * 0.9)  # Canvas said LATE: one started day
     assert scores["1005"] < FULL
 
 
@@ -197,12 +219,15 @@ def test_every_flag_is_where_the_instructor_looks_first(semester):
     assert "1002 (Roe, Rick)" in flags["Late"]
     assert "1003 (Poe, Ann)" in flags["Several notebooks (the newest graded)"]
     assert "1005 (Fox, Sam)" in flags["Wrong variant code (whose code: see the feedback)"]
-    assert "Roster students without a submission (1): 1006" in first
+    assert "Roster students without a submission (1): 1006 (Kim, Mia)" in first  # not the Test Student
+    assert "Test" not in first
+    assert f"{FULL}/{FULL} → {CANVAS_MAX}/{CANVAS_MAX} in Canvas" in summary
     honest = [line for line in flags.values() if "1001 (Doe, Jane)" in line]
     assert all("same variant code" in line for line in honest)  # Jane: only as the code's owner
     assert not [line for line in flags.values() if "1002" in line and "Late" not in line]
     results = _results(out)
-    assert results["1004"]["status"] == "ok; edited after submit"
+    assert results["1004"]["status"] == "ok; edited after submit"  # his submit() time agrees
+    assert results["1004"]["penalty"] == 0  # Canvas said on time: no penalty
     assert results["1002"]["status"] == "ok; late"
     assert "wrong variant code" in results["1005"]["status"]
     assert results["strangerx_29999"]["status"].startswith("not graded")
@@ -210,6 +235,12 @@ def test_every_flag_is_where_the_instructor_looks_first(semester):
     assert "the code of roster student 1001" in sam.read_text(encoding="utf-8")
     jane = (out / "feedback" / "1001.md").read_text(encoding="utf-8")
     assert "raised" not in jane  # her hand-in cell is not run by the grader
+    assert f"{FULL}/{FULL} → {CANVAS_MAX}/{CANVAS_MAX} in Canvas" in jane
+    # Tom: the file's real time and Canvas's verdict, apart; never the deadline as his time
+    tom = (out / "feedback" / "1004.md").read_text(encoding="utf-8")
+    assert f"Canvas says on time; the file's time is {semester['tom_file_time']}" in tom
+    assert f"Submitted: {semester['deadline']}" not in tom
+    assert "Canvas's verdict is used" in tom and "On time." in tom
     assert "strangerx_29999: listed, not graded" in semester["console"]
     assert "Per-student variants" not in summary or "| q" in summary.split("Per-student variants")[1]
 
@@ -231,12 +262,12 @@ def test_a_regrade_with_only_touches_one_student(semester, tmp_path):
 WORKSHEET = (  # Moodle: Assignment > "Download grading worksheet" (ID number shown as identity)
     "Identifier,Full name,ID number,Email address,Status,Grade,Maximum Grade,Grade can be changed,"
     "Last modified (submission),Last modified (grade),Feedback comments\n"
-    "Participant 801,Jane Doe,1001,jane@uni.example,Submitted for grading,,11.00,Yes,,-,\n"
-    "Participant 802,Rick Roe,1002,rick@uni.example,Submitted for grading,,11.00,Yes,,-,\n"
-    "Participant 803,Ann Poe,1003,ann@uni.example,Submitted for grading,,11.00,Yes,,-,\n"
-    "Participant 804,Tom Lee,1004,tom@uni.example,Submitted for grading,,11.00,Yes,,-,\n"
-    "Participant 805,Sam Fox,1005,sam@uni.example,Submitted for grading,,11.00,Yes,,-,\n"
-    "Participant 806,Mia Kim,1006,mia@uni.example,No submission,,11.00,Yes,,-,\n"
+    "Participant 801,Jane Doe,1001,jane@uni.example,Submitted for grading,,100.00,Yes,,-,\n"
+    "Participant 802,Rick Roe,1002,rick@uni.example,Submitted for grading,,100.00,Yes,,-,\n"
+    "Participant 803,Ann Poe,1003,ann@uni.example,Submitted for grading,,100.00,Yes,,-,\n"
+    "Participant 804,Tom Lee,1004,tom@uni.example,Submitted for grading,,100.00,Yes,,-,\n"
+    "Participant 805,Sam Fox,1005,sam@uni.example,Submitted for grading,,100.00,Yes,,-,\n"
+    "Participant 806,Mia Kim,1006,mia@uni.example,No submission,,100.00,Yes,,-,\n"
 )
 
 
@@ -278,13 +309,13 @@ def test_the_moodle_worksheet_comes_back_filled_in(moodle):
         rows = {r["Identifier"]: r for r in reader}
     # matched to Moodle's own identifiers; the stranger and Mia (no submission) are not in it
     assert sorted(rows) == [f"Participant {n}" for n in (801, 802, 803, 804, 805)]
-    grades = {k: float(r["Grade"]) for k, r in rows.items()}
-    assert grades["Participant 801"] == FULL and grades["Participant 803"] == FULL
-    assert grades["Participant 804"] == FULL and grades["Participant 805"] < FULL
-    assert grades["Participant 802"] == pytest.approx(FULL * 0.9)
+    grades = {k: float(r["Grade"]) for k, r in rows.items()}  # scaled to the Maximum Grade
+    assert grades["Participant 801"] == 100 and grades["Participant 803"] == 100
+    assert grades["Participant 804"] == 100 and grades["Participant 805"] < 100
+    assert grades["Participant 802"] == pytest.approx(100 * 0.9)
     assert rows["Participant 801"]["Feedback comments"].startswith("11/11; q1 2/2 ✓; q2 3/3 ✓")
     sam = rows["Participant 805"]["Feedback comments"]
-    assert "q1 0/2" in sam and "✓" in sam
+    assert "q1 0/2" in sam and "not done on your own data" in sam  # per question, with the reason
     assert rows["Participant 802"]["Email address"] == "rick@uni.example"
 
 
@@ -296,5 +327,39 @@ def test_moodle_flags_are_in_the_summary(moodle):
     assert late.endswith("1002 (Rick Roe)")
     several = next(x for x in first.splitlines() if x.startswith("- **Several notebooks"))
     assert several.endswith("1003 (Ann Poe)")
-    assert "Roster students without a submission (1): 1006" in first
+    assert "Roster students without a submission (1): 1006 (Mia Kim)" in first
+    assert f"{FULL}/{FULL} → 100/100 in Moodle" in summary
     assert "manifest" not in first  # no honest student's manifest disagrees with Moodle
+
+
+def test_an_assignment_the_canvas_export_lacks_stops_before_grading(tmp_path):
+    """README: ASSIGNMENT= names the export's column; a wrong name stops with the columns."""
+    (tmp_path / "gradebook.csv").write_text(GRADEBOOK, encoding="utf-8")
+    (tmp_path / "subs").mkdir()
+    (tmp_path / "subs" / "doejane_20001_70001_hw01-1001.ipynb").write_text("{}", encoding="utf-8")
+    for extra in ([], ["--assignment", "Homework 9"]):  # hw01 is no column of this export either
+        done = subprocess.run(
+            [sys.executable, "tools/grade.py", "--tests", f"solutions/hidden_tests/{HW}.py",
+             "--submissions", str(tmp_path / "subs"), "--out", str(tmp_path / "out"),
+             "--roster", str(tmp_path / "gradebook.csv"), "--format", "canvas", *extra],
+            cwd=ROOT, capture_output=True, text=True, timeout=120,
+            env=dict(os.environ, PYTHONPATH=str(ROOT)),
+        )  # fmt: skip
+        assert done.returncode != 0
+        message = done.stderr.strip()
+        assert len(message.splitlines()) == 1, message
+        assert '"Homework 1 (12345)"; "Homework 2 (12346)"' in message, message
+        assert "Current Score" not in message and "nothing was graded" in message
+        assert not (tmp_path / "out").exists()
+
+
+def test_the_student_data_the_readme_names_is_git_ignored():
+    """README, "Where student data lives": rosters, codes and grades are never committed."""
+    paths = ["codes.csv", "codes-hw01.csv", "roster.csv", "gradebook.csv", "worksheet.csv",
+             "course_secret.txt", "grades/hw01/scores.csv", "grading-output/hw01/scores.csv",
+             "submissions/hw01-1001.ipynb"]  # fmt: skip
+    done = subprocess.run(["git", "check-ignore", "--no-index", *paths], cwd=ROOT,
+                          capture_output=True, text=True)  # fmt: skip
+    assert sorted(done.stdout.split()) == sorted(paths), done.stdout
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    assert all(f"`{p}`" in readme for p in ("codes*.csv", "roster*.csv", "grades/"))

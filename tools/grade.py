@@ -62,7 +62,8 @@ the code the solution notebook calls.
 Gradebooks
 ----------
 ``--roster`` maps submissions to LMS ids; ``--format plain|canvas|moodle`` chooses the layout of
-``scores.csv``; ``--deadline`` and ``--late-penalty`` apply a late rule (stated in every feedback
+``scores.csv``; ``--assignment NAME`` picks a Canvas export's column (its exact header, "(id)"
+included; points scaled to its "Points Possible"); ``--deadline`` and ``--late-penalty`` apply a late rule (stated in every feedback
 file); ``--only STUDENT`` regrades one student and merges the row; ``--executor dask`` grades on a
 Dask cluster (``--scheduler``).  See ``tools/grading/reports.py`` and the README.
 
@@ -238,8 +239,13 @@ class Reports:
         roster=None,
         late=None,
         keep: list[Result] | None = None,
+        assignment: str | None = None,
     ) -> None:
         self.tests, self.out, self.fmt, self.roster, self.late = tests, out, fmt, roster, late
+        #: the import file's column (the export's exact header) and the LMS's maximum
+        self.assignment = assignment or tests.homework
+        self.lms_max = reports.lms_maximum(roster, fmt, self.assignment) if roster is not None else None
+        self.lms = {"canvas": "Canvas", "moodle": "Moodle"}.get(fmt)
         self.results: dict[str, Result] = {r.student: r for r in keep or []}
         self.labels: dict[str, dict[str, str]] = {}
         self.stems: dict[str, str] = safe_names.file_stems(self.results)
@@ -267,16 +273,21 @@ class Reports:
         for r in [only] if only is not None else results:
             reports.atomic_write(
                 self.out / "feedback" / f"{self.stems[r.student]}.md",
-                reports.feedback_markdown(r, self.tests, self.late),
+                reports.feedback_markdown(
+                    r, self.tests, self.late, (self.lms, self.lms_max) if self.lms else None
+                ),
             )
         table = reports.scores_table(
-            results, self.tests, self.fmt, self.roster, self.tests.homework
+            results, self.tests, self.fmt, self.roster, self.assignment, self.lms_max
         )
         reports.atomic_write(self.out / "scores.csv", table)
         reports.atomic_write(
             self.out / "results.json", reports.results_json(results, self.tests, self.late)
         )
-        text, _ = reports.summary(results, self.tests, self.roster, self.variant_labels(results))
+        text, _ = reports.summary(
+            results, self.tests, self.roster, self.variant_labels(results),
+            lms=(self.lms, self.lms_max, self.assignment) if self.lms else None,
+        )  # fmt: skip
         reports.atomic_write(self.out / "summary.md", text)
 
     def variant_labels(self, results: list[Result]) -> dict[str, dict[str, str]]:
@@ -300,6 +311,22 @@ class Reports:
                 self.out / "histogram.png",
                 reports.histogram_png(self.graded_students(), self.tests),
             )
+
+
+def import_column(roster, fmt: str, name: str) -> str:
+    """The import file's assignment column: with a Canvas export as the roster, the export's
+    own header for ``name`` (Canvas matches on it, "(id)" included); stops when there is none."""
+    if fmt != "canvas" or getattr(roster, "kind", "") != "canvas":
+        return name
+    column = reports.canvas_column(roster, name)
+    if column is None:
+        have = "; ".join(f'"{c}"' for c in reports.canvas_assignments(roster)) or "none"
+        raise SystemExit(
+            f"--assignment {name!r}: the Canvas export has no such assignment column (its "
+            f"assignment columns: {have}); nothing was graded -- pass --assignment \"NAME\" "
+            "(make grade ... ASSIGNMENT=\"NAME\")."
+        )
+    return column
 
 
 def load_previous(out: Path, tests: HiddenTests) -> list[Result]:
@@ -368,6 +395,8 @@ def _finish_result(r: Result, item: Item, args, late) -> Result:
         when, source = found.mtime, "file time"
     flags += tflags
     notes += tnotes
+    if found.mtime is not None:
+        r.file_time = found.mtime.isoformat(timespec="seconds")
     if when is not None:
         r.submitted, r.time_source = when.isoformat(timespec="seconds"), source
     else:  # never the manifest's time alone: it is written on the student's machine
@@ -435,6 +464,13 @@ def main(argv: list[str] | None = None) -> int:
         default="plain",
         help="layout of scores.csv: plain, canvas or moodle gradebook import",
     )
+    p.add_argument(
+        "--assignment",
+        metavar="NAME",
+        help="the gradebook column to fill: with a Canvas export as --roster, the export's "
+        "assignment column by its name, with or without Canvas's '(id)' (default: the homework, "
+        "e.g. hw01)",
+    )
     p.add_argument("--deadline", help="ISO time, e.g. 2026-12-01T23:59+01:00")
     p.add_argument("--late-penalty", default="10%", help="per started day late (default 10%%)")
     p.add_argument(
@@ -464,6 +500,7 @@ def main(argv: list[str] | None = None) -> int:
         print(f"--submissions {args.submissions} is not a folder", file=sys.stderr)
         return 2
     roster = reports.read_roster(args.roster) if args.roster else None
+    assignment = import_column(roster, args.format, args.assignment or tests.homework)
     secret = read_secret(args.secret_file) if args.secret_file else None
     if tests.variants and secret is None:
         print(
@@ -527,7 +564,8 @@ def main(argv: list[str] | None = None) -> int:
         students = {i.student for i in found}
         keep = [r for r in load_previous(args.out, tests)
                 if r.student not in students and r.file not in files]  # fmt: skip
-    out = Reports(tests, args.out, fmt=args.format, roster=roster, late=late, keep=keep)
+    out = Reports(tests, args.out, fmt=args.format, roster=roster, late=late, keep=keep,
+                  assignment=assignment)  # fmt: skip
     out.reserve([i.student for i in found] + list(refused))
     for student, entries in refused.items():
         if not any(i.student == student for i in found):  # nothing of theirs was opened

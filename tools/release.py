@@ -71,6 +71,10 @@ your student id, so a friend's code (or none) makes the data questions wrong. Wi
 
 ## Submit
 
+`your-id` below is **the id your instructor gave you with your variant code** — your id on the
+course roster (e.g. your student number / SIS id), not a name you choose: your variant code is
+made from it, and the grader finds you (and your data) by it.
+
 Save the notebook, then `make submit HW=hw01 STUDENT=your-id` (`HW=hw1` or `HW=1` work too; or,
 in a new cell at the end of the notebook,
 `from course_lib.submit import submit; submit("hw01_reparametrization.ipynb", student="your-id")`).

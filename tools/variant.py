@@ -7,8 +7,9 @@ Usage::
         # once per course: a new random course secret, file mode 0600 (never overwrites one).
         # Keep it out of the repository and away from students; it makes and checks the codes.
     python tools/variant.py codes hw01 --secret-file course_secret.txt --roster roster.csv [--out codes.csv]
-        # every student's variant code as CSV (id,name,email,code) for the LMS: mail merge,
-        # a column in the gradebook, ... Each student pastes their code into VARIANT = "...".
+        # every student's variant code as CSV (id,name,email,code,tell_the_student) for the LMS:
+        # mail merge, a gradebook column, ... Tell each student their code AND their id (the id
+        # column): they hand in with STUDENT=<id>. Each student pastes their code into VARIANT.
     python tools/variant.py show hw01 STUDENT --secret-file course_secret.txt
         # office hours: the student's code, their data and the worked answers
         # (``answers_for(data)`` of the hidden tests, solutions/hidden_tests/hw01.py)
@@ -86,12 +87,17 @@ def _homework(hw: str) -> str:
 
 
 def codes_csv(hw: str, secret: bytes, roster: dict) -> str:
-    """``id,name,email,code`` for every roster entry (codes by the LMS id, as the grader makes them)."""
+    """``id,name,email,code,tell_the_student`` for every roster entry (codes by the roster id, as
+    the grader makes them); the last column is the message for the student: the code and the id
+    to hand in with (``make submit ... STUDENT=<id>``)."""
     buf = io.StringIO()
     w = safe_csv_writer(buf, lineterminator="\n")  # a roster name is never run as a formula
-    w.writerow(["id", "name", "email", "code"])
+    w.writerow(["id", "name", "email", "code", "tell_the_student"])
     for entry in roster.values():
-        w.writerow([entry.id, entry.name, entry.email, variants.code_for(secret, hw, entry.id)])
+        code = variants.code_for(secret, hw, entry.id)
+        w.writerow([entry.id, entry.name, entry.email, code,
+                    f"{hw}: your variant code is {code}; hand in with STUDENT={entry.id} "
+                    f'(submit(..., student="{entry.id}"))'])  # fmt: skip
     return buf.getvalue()
 
 

@@ -41,11 +41,12 @@ ID_DIFFERS = "manifest id differs"
 SEVERAL = "several notebooks"
 LATE = "late"
 NOT_IN_ROSTER = "not in the roster"
+FILE_TIME_AFTER = "file time after deadline"  # Canvas says on time: Canvas decides
 WRONG_CODE = "wrong variant code"
 NO_CODE = "no variant code"
 SHARED_CODE = "shared variant code"
 FLAGS = (NOT_IN_ROSTER, EDITED, ID_DIFFERS, TIMES_DISAGREE, LATE, SEVERAL, WRONG_CODE,
-         SHARED_CODE, NO_CODE)  # fmt: skip
+         SHARED_CODE, NO_CODE, FILE_TIME_AFTER)  # fmt: skip
 
 #: a manifest time more than this after the file's own time cannot be true
 CLOCK_SLACK_SECONDS = 600
@@ -295,6 +296,14 @@ def time_flags(found: Found, deadline: datetime | None) -> tuple[datetime | None
             when = found.mtime if found.mtime and found.mtime > later else later
         else:
             when = min(found.mtime, deadline) if found.mtime else deadline
+            if found.mtime is not None and found.mtime > deadline:
+                notes.append(
+                    f"the file's time {found.mtime.isoformat(timespec='seconds')} is after the "
+                    "deadline, but Canvas marked the upload on time: Canvas's verdict is used "
+                    "(no penalty; a file's time can also be when it was unpacked)"
+                )
+                if m_time is None:  # no submit() time backs Canvas's verdict up: have a look
+                    flags.append(FILE_TIME_AFTER)
         if m_time is not None and (m_time > deadline) != found.lms_late:
             flags.append(TIMES_DISAGREE)
             notes.append(

@@ -66,6 +66,10 @@ class Roster(dict):
 
     kind = "plain"
     fields: tuple[str, ...] = ()
+    #: Canvas's "Points Possible" row (column -> text), when the export has one
+    points_possible: dict[str, str] | None = None
+    #: roster entries skipped on purpose (Canvas's "Test Student")
+    skipped: tuple[str, ...] = ()
 
 
 #: a Canvas gradebook export: these columns, then one per assignment; its second row is
@@ -109,8 +113,15 @@ def read_roster(path: Path) -> Roster:
             )
         roster = Roster()
         roster.kind, roster.fields = kind, tuple(fields)
+        roster.points_possible, skipped = {}, []
         for n, raw in enumerate(reader, start=2):
             raw = {k.strip(): (v or "").strip() for k, v in raw.items() if k}
+            if kind == "canvas" and raw.get("Student", "").startswith("Points Possible"):
+                roster.points_possible = raw
+                continue
+            if kind == "canvas" and _canvas_test_student(raw):
+                skipped.append(raw.get("Student", ""))
+                continue
             entry = _entry(kind, raw)
             if entry is None:
                 continue
@@ -119,7 +130,15 @@ def read_roster(path: Path) -> Roster:
             if entry.key in roster:
                 raise SystemExit(f"--roster {path}, line {n}: {entry.key!r} appears twice")
             roster[entry.key] = entry
+    roster.skipped = tuple(skipped)
     return roster
+
+
+def _canvas_test_student(raw: dict) -> bool:
+    """Canvas's "Test Student" (Student View): no SIS id, named "Student, Test"."""
+    name = " ".join(raw.get("Student", "").replace(",", " ").split()).lower()
+    no_sis = not raw.get("SIS User ID") and not raw.get("SIS Login ID")
+    return no_sis and name in ("student test", "test student")
 
 
 def _entry(kind: str, raw: dict) -> RosterEntry | None:
@@ -224,19 +243,76 @@ def notes_text(r, tests) -> str:
     return "; ".join(parts)
 
 
-def _canvas_assignment(roster, assignment: str) -> str:
-    """The assignment's column as the Canvas export names it (``hw03 (4711)``), else its name."""
-    for f in getattr(roster, "fields", ()):
-        if f.strip().lower() == assignment.lower() or f.strip().lower().startswith(assignment.lower() + " ("):
+#: columns of a Canvas export that are not assignments (totals, group scores, grades)
+_CANVAS_TOTALS = re.compile(r"(current|final|unposted).*(score|grade|points)$|points$", re.I)
+
+
+def canvas_assignments(roster) -> list[str]:
+    """The assignment columns of a Canvas gradebook export, as headed there."""
+    possible = getattr(roster, "points_possible", {}) or {}
+    out = []
+    for f in getattr(roster, "fields", ())[len(CANVAS_COLUMNS):]:
+        name = f.strip()
+        if not name or "read only" in possible.get(name, "").lower():
+            continue
+        if not possible and _CANVAS_TOTALS.search(name):
+            continue
+        out.append(name)
+    return out
+
+
+def canvas_column(roster, assignment: str) -> str | None:
+    """The export's column for ``assignment``: its exact header (with Canvas's ``(id)``),
+    matched with or without that suffix, case-insensitively; ``None`` if there is none."""
+    want = " ".join(assignment.split()).lower()
+    for f in canvas_assignments(roster):
+        low = " ".join(f.split()).lower()
+        if low == want or re.sub(r"\s*\(\d+\)$", "", low) == want:
             return f
-    return assignment
+    return None
+
+
+def lms_maximum(roster, fmt: str, column: str | None) -> float | None:
+    """The assignment's maximum as the LMS export states it (Canvas's Points Possible row,
+    Moodle's worksheet "Maximum Grade"), else ``None``."""
+    text = ""
+    if fmt == "canvas" and column:
+        text = (getattr(roster, "points_possible", {}) or {}).get(column, "")
+    elif fmt == "moodle" and getattr(roster, "kind", "") == "moodle-worksheet":
+        found = {e.row.get("Maximum Grade", "") for e in roster.values()} - {""}
+        text = found.pop() if len(found) == 1 else ""
+    try:
+        value = float(text.replace(",", "."))
+    except ValueError:
+        return None
+    return value if value > 0 else None
+
+
+def lms_score(r, tests, lms_max: float | None) -> float:
+    """The score written into the import file: scaled to the LMS's maximum when it has one."""
+    if not lms_max or not tests.max_points:
+        return final_total(r)
+    return round(final_total(r) * lms_max / tests.max_points, 2)
+
+
+def scale_note(r, tests, lms_max: float | None, lms: str) -> str:
+    """``11/11 → 100/100 in Canvas`` (or why the score is written unscaled)."""
+    if lms_max is None:
+        return f"{final_total(r):g}/{tests.max_points:g} (written as is: the {lms} export gives no maximum)"
+    return f"{final_total(r):g}/{tests.max_points:g} → {lms_score(r, tests, lms_max):g}/{lms_max:g} in {lms}"
 
 
 def scores_table(
-    results, tests, fmt: str, roster: dict[str, RosterEntry] | None, assignment: str
+    results,
+    tests,
+    fmt: str,
+    roster: dict[str, RosterEntry] | None,
+    assignment: str,
+    lms_max: float | None = None,
 ) -> str:
     """``scores.csv`` in ``fmt``.  The Canvas and Moodle layouts are import files: a row whose
-    submission matched no roster entry is never in them (the summary lists it)."""
+    submission matched no roster entry is never in them (the summary lists it).  ``assignment``
+    is the import column's exact header; ``lms_max`` the LMS's maximum the scores are scaled to."""
     questions = list(tests.points)
     buf = io.StringIO()
     w = safe_csv_writer(buf, lineterminator="\n")  # no cell is ever a formula
@@ -246,9 +322,8 @@ def scores_table(
     if fmt in ("canvas", "moodle") and roster is None:
         matched = rows  # no roster: the submission's own name is all there is
     if fmt == "canvas":
-        column = _canvas_assignment(roster, assignment)
-        w.writerow([*CANVAS_COLUMNS, column])
-        w.writerow(["    Points Possible", "", "", "", "", f"{tests.max_points:g}"])
+        w.writerow([*CANVAS_COLUMNS, assignment])
+        w.writerow(["    Points Possible", "", "", "", "", f"{lms_max or tests.max_points:g}"])
         for r in matched:
             e = r.lms or {}
             row = e.get("row") or {}
@@ -257,7 +332,7 @@ def scores_table(
                        row.get("SIS Login ID", ""), row.get("Section", "")]  # fmt: skip
             else:  # a course roster: its id is the SIS User ID Canvas matches on
                 ids = [e.get("name") or r.student, "", e.get("id", r.student), "", ""]
-            w.writerow([*ids, f"{final_total(r):g}"])
+            w.writerow([*ids, f"{lms_score(r, tests, lms_max):g}"])
     elif fmt == "moodle":
         if kind == "moodle-worksheet":  # Moodle's grading worksheet, filled in: upload it back
             fields = list(roster.fields)
@@ -267,7 +342,7 @@ def scores_table(
             w.writerow(fields)
             for r in matched:
                 row = dict(r.lms.get("row") or {})
-                row["Grade"] = f"{final_total(r):g}"
+                row["Grade"] = f"{lms_score(r, tests, lms_max):g}"
                 row["Feedback comments"] = notes_text(r, tests)
                 w.writerow([row.get(f, "") for f in fields])
         else:  # Moodle's grade import: map "ID number" (or "Email address") to the user
@@ -306,12 +381,18 @@ def scores_table(
     return buf.getvalue()
 
 
-def feedback_markdown(r, tests, late: LatePolicy | None = None) -> str:
+def feedback_markdown(r, tests, late: LatePolicy | None = None, lms=None) -> str:
+    """One student's feedback; ``lms`` is ``(LMS name, its maximum or None)`` when the scores
+    go to an LMS import file (the scaling is stated)."""
     lines = [
         f"# {tests.homework} — {r.student}",
         "",
         f"**Score: {final_total(r):g} / {tests.max_points:g}**",
         "",
+    ]
+    if lms is not None and r.lms is not None:
+        lines += [f"In the gradebook: {scale_note(r, tests, lms[1], lms[0])}.", ""]
+    lines += [
         "| question | points | max | note |",
         "|---|---|---|---|",
     ]
@@ -322,12 +403,16 @@ def feedback_markdown(r, tests, late: LatePolicy | None = None) -> str:
             note = "feedback only: " + ("✓ right" if r.right(q, 0) else f"✗ {text or 'wrong answer'}")
         lines.append(f"| {q} | {r.points[q]:g} | {tests.points[q]:g} | {note} |")
     if late is not None:
-        when = r.submitted or "unknown"
+        if r.time_source.startswith("Canvas"):  # the LMS's verdict; the file's own time apart
+            verdict = r.time_source.removeprefix("Canvas: ")
+            when = f"Canvas says {verdict}; the file's time is {r.file_time or 'unknown'}"
+        else:
+            when = f"{r.submitted or 'unknown'} ({r.time_source})"
         lines += [
             "",
             "## Deadline",
             "",
-            f"Rule: {late.describe()}. Submitted: {when} ({r.time_source}).",
+            f"Rule: {late.describe()}. Submitted: {when}.",
             f"Late by {r.days_late} started day(s): {r.penalty:.0%} off "
             f"({r.total:g} → {final_total(r):g})."
             if r.days_late
@@ -372,12 +457,17 @@ ACT_ON = (
     ("shared variant code", "The same variant code in several notebooks"),
     ("no variant code", "No variant code in the notebook (graded on their own data)"),
     ("late", "Late"),
+    ("file time after deadline", "File time after the deadline, but Canvas says on time (Canvas decides; no penalty)"),
     ("several notebooks", "Several notebooks (the newest graded)"),
 )
 
 
 def flags_of(r) -> list[str]:
     return [p.strip() for p in r.status.split(";")[1:]]
+
+
+def _named(e: RosterEntry) -> str:
+    return f"{e.id} ({e.name})" if e.name and e.name != e.id else e.id
 
 
 def _who(r) -> str:
@@ -392,9 +482,11 @@ def summary(
     tests,
     roster: dict[str, RosterEntry] | None,
     labels: dict[str, dict[str, str]] | None = None,
+    lms: tuple[str, float | None, str] | None = None,
 ) -> tuple[str, dict]:
     """The class summary: what to act on first (flags, missing students), then statistics
-    over the class (roster students only when there is a roster; not-graded rows never)."""
+    over the class (roster students only when there is a roster; not-graded rows never).
+    ``lms`` is ``(LMS name, its maximum or None, the import column)`` for an import file."""
     listed = list(results)
     results = [r for r in listed if not r.status.startswith("not graded")]
     if roster is not None:
@@ -428,7 +520,7 @@ def summary(
     if roster is not None:
         seen = {r.lms["id"] for r in listed if r.lms}
         unknown = sorted(r.student for r in listed if not r.lms)
-        missing = sorted(e.id for e in roster.values() if e.id not in seen)
+        missing = sorted(_named(e) for e in roster.values() if e.id not in seen)
         data["not_in_roster"], data["no_submission"] = unknown, missing
         lines += [
             f"- Submissions not in the roster ({len(unknown)}): " + (", ".join(unknown) or "none"),
@@ -448,6 +540,19 @@ def summary(
     ]
     if totals:
         lines.append(f"Mean {data['mean']:g}, median {data['median']:g}.")
+    if lms is not None:
+        name, top, column = lms
+        data["import"] = {"lms": name, "column": column, "maximum": top}
+        if top is None:
+            lines.append(
+                f"Import file (scores.csv, column \"{column}\"): scores written as they are "
+                f"(out of {tests.max_points:g}); the {name} export gives no maximum."
+            )
+        else:
+            lines.append(
+                f"Import file (scores.csv, column \"{column}\"): scores scaled to {name}'s "
+                f"maximum, {tests.max_points:g}/{tests.max_points:g} → {top:g}/{top:g} in {name}."
+            )
     lines += ["", "| question | points | right |", "|---|---|---|"]
     lines += [
         f"| {q} | {tests.points[q]:g}{' (feedback only)' if tests.points[q] == 0 else ''} "

@@ -26,7 +26,7 @@ from pathlib import Path
 
 import nbformat
 
-from course_lib.submit import manifest_of
+from course_lib.submit import describe_cell, error_text, manifest_of
 
 from . import jobroot, protocol, sandbox
 
@@ -107,6 +107,7 @@ class Result:
     manifest_student: str | None = None  # the student id written by submit(), if any
     submitted: str | None = None  # ISO time used for the late rule
     time_source: str = "none"  # "manifest", "file" or "none"
+    file_time: str | None = None  # the file's own time (shown apart from the LMS's verdict)
     days_late: int = 0
     penalty: float = 0.0  # fraction of the points lost for lateness
     lms: dict | None = None  # the roster entry: id, name, email
@@ -613,7 +614,7 @@ def _read_notebook(path: Path) -> tuple[nbformat.NotebookNode | None, str]:
 def _error_text(outputs) -> str | None:
     for out in outputs:
         if out.get("output_type") == "error":
-            return f"{out.get('ename', 'Error')}: {str(out.get('evalue', ''))[:200]}"
+            return error_text(out.get("ename", "Error"), out.get("evalue", ""))
     return None
 
 
@@ -682,6 +683,7 @@ def grade_notebook(
             result.notes[q] = "not graded (the file is not a valid notebook)"
         return result
     cells = [str(c.get("source", "")) for c in nb.cells if c.get("cell_type") == "code"]
+    positions = [n for n, c in enumerate(nb.cells, start=1) if c.get("cell_type") == "code"]
     manifest = manifest_of(nb)
     if manifest is not None:
         result.manifest_student = manifest["student"]
@@ -725,7 +727,8 @@ def grade_notebook(
             result.notes[q] = note
         for k in sorted(session.errors):
             if len(result.run_notes) < 12:
-                result.run_notes.append(f"code cell {k + 1} raised {session.errors[k]}")
+                where = describe_cell(k + 1, positions[k], cells[k])
+                result.run_notes.append(f"{where} raised {session.errors[k]}")
         if any("[Errno 28]" in e for e in session.errors.values()):
             lim = opts.limits
             result.run_notes.append(

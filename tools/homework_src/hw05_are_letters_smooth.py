@@ -305,7 +305,8 @@ report
 # %% [markdown]
 # ## Hand in
 #
-# Save the notebook, then hand it in with **one** of these (use your student id):
+# Save the notebook, then hand it in with **one** of these. For `your-id` use the id your instructor
+# gave you with your variant code (your id on the course roster, e.g. your student number / SIS id):
 #
 # * in a terminal, from the course folder: `make submit HW=hw05 STUDENT=your-id`
 # * in a new cell here: `from course_lib.submit import submit; submit("hw05_are_letters_smooth.ipynb", student="your-id")`
