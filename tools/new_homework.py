@@ -153,7 +153,7 @@ from course_lib import variants
 from course_lib.checks import check, check_all
 
 HOMEWORK = "@HW@"
-VARIANT = ""  # paste the variant code your instructor gave you (10 characters)
+VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "KQW7MZP3XS"
 DATA = variants.data(HOMEWORK, VARIANT)
 
 # %% [markdown]
