@@ -137,7 +137,9 @@ check("hw03.q3", answer_q3)
 ### ALT Finn's G1 control points d as grey dots joined by a dotted line, and the three splines
 ### ALT (a), (b), (c) built from them with different knots, one colour each, their joints marked
 ### ALT by squares: the curves follow the same control points but bend differently near the joints.
-fig, ax = plt.subplots(figsize=(7, 3.2))
+from course_lib.plotting import new_figure  # the course palette (3:1 on white)
+
+fig, ax = new_figure(figsize=(7, 3.2))
 ax.plot(D[:, 0], D[:, 1], "o:", color="0.5", label="G1 control points d")
 for label, P, k in zip("abc", answer_q3, (knots_a, knots_b, knots_c), strict=True):
     spline = PiecewiseBezier.from_control_points(P, 3, knots=k)
