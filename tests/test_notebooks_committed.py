@@ -56,6 +56,8 @@ def test_lecture_notebooks_exist_in_course_order():
         "02_beta_constraints.ipynb",
         "03_g1_knot_bezier_splines.ipynb",
         "04_beta_splines.ipynb",
-        "05_higher_order_and_surfaces.ipynb",
+        "05_higher_order.ipynb",
+        "06_surfaces.ipynb",
+        "07_are_letters_smooth.ipynb",
     ]
     assert [n for n in names if n in expected] == expected

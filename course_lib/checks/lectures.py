@@ -83,16 +83,28 @@ def _w1_x_for_beta1_half() -> float:  # lecture 4, Q3: x of W_1, V_2 = (1, 2), V
     return float(stitched.segments[1][1][0])
 
 
-def _beta2_in_course_convention() -> float:  # lecture 5, Q3: seed 001's (2, 1, 0) -> β2
+def _beta2_in_course_convention() -> float:  # lecture 5, Q2: seed 001's (2, 1, 0) -> β2
     from ..seed_formulas import inverse_betas
 
     return float(inverse_betas((2.0, 1.0, 0.0))[1])
 
 
-def _shape_functions_g2() -> float:  # lecture 5, Q2: seed 001 counts n(n + 3) for G^n
+def _unknowns_g4() -> float:  # lecture 5, Q3: (n + 2)² coefficients of the G^4 weights
+    from ..seed_formulas import blending_system
+
+    return float(len(blending_system(4, [1, 0, 0, 0])[1]))
+
+
+def _shape_functions_g2() -> float:  # lecture 6, Q1: seed 001 counts n(n + 3) for G^n
     from ..surfaces import count_shape_functions
 
     return float(count_shape_functions(2))
+
+
+def _free_shape_functions_g3() -> float:  # lecture 6, Q2: n(n + 3) less the 2n along the boundary
+    from ..surfaces import count_shape_functions
+
+    return float(count_shape_functions(3) - 2 * 3)
 
 
 def _unit_tangent_after_reparametrization() -> np.ndarray:  # lecture 1, Q4
@@ -119,7 +131,7 @@ def _third_derivative_from_betas() -> np.ndarray:  # lecture 2, Q4: r'''(0) at a
     return np.array([float(third.subs(at)) for at in at_q])
 
 
-def _curvature_jump_at_implied_point() -> float:  # lecture 6, Q4: κ_r − κ_q at M, in 1/em
+def _curvature_jump_at_implied_point() -> float:  # lecture 7, Q4: κ_r − κ_q at M, in 1/em
     from ..curve import PiecewiseBezier
     from ..differential_geometry import signed_curvature
 
@@ -131,13 +143,13 @@ def _curvature_jump_at_implied_point() -> float:  # lecture 6, Q4: κ_r − κ_q
     return float(np.squeeze(kappa_r - kappa_q))
 
 
-def _g2_points_of_eight() -> float:  # lecture 6, Q5: G2 joints of DejaVu Sans' "8"
+def _g2_points_of_eight() -> float:  # lecture 7, Q5: G2 joints of DejaVu Sans' "8"
     from ..outlines import glyph_outline, glyph_summary
 
     return float(glyph_summary(glyph_outline("8")).g2)
 
 
-def _corners_of_ampersand() -> float:  # lecture 6, Q2: corners of DejaVu Sans' "&"
+def _corners_of_ampersand() -> float:  # lecture 7, Q2: corners of DejaVu Sans' "&"
     from ..outlines import glyph_outline, glyph_summary
 
     return float(glyph_summary(glyph_outline("&")).corners)
@@ -229,13 +241,13 @@ _CHOICES: dict[str, _Choice] = {
         ("C3", "C1 but not C2", "G3 but not even C1", "neither C1 nor G3"),
         _quartic_order_choice,
     ),
-    "lecture06.q1": _Choice(
+    "lecture07.q1": _Choice(
         "At an implied on-curve point the two segments are",
         ("C1 with β1 = 1", "G1 but never C1", "always G2",
          "G2 exactly when the chord P0 P2 is perpendicular to AB"),
         lambda: "a",  # velocity B - A on both sides
     ),
-    "lecture06.q3": _Choice(
+    "lecture07.q3": _Choice(
         "After the change",
         ("the font's on-curve points still lie on the outline",
          "every joint is G2, but the outline moved by about 0.01 em",
@@ -253,11 +265,13 @@ _NUMBERS: dict[str, Callable[[], float]] = {
     "lecture03.q4": _kappa_circle_radius_2,
     "lecture04.q2": _gamma_uniform,
     "lecture04.q3": _w1_x_for_beta1_half,
-    "lecture05.q2": _shape_functions_g2,
-    "lecture05.q3": _beta2_in_course_convention,
-    "lecture06.q2": _corners_of_ampersand,
-    "lecture06.q4": _curvature_jump_at_implied_point,
-    "lecture06.q5": _g2_points_of_eight,
+    "lecture05.q2": _beta2_in_course_convention,
+    "lecture05.q3": _unknowns_g4,
+    "lecture06.q1": _shape_functions_g2,
+    "lecture06.q2": _free_shape_functions_g3,
+    "lecture07.q2": _corners_of_ampersand,
+    "lecture07.q4": _curvature_jump_at_implied_point,
+    "lecture07.q5": _g2_points_of_eight,
 }
 
 #: question id -> function computing the expected plane vector from the question's data

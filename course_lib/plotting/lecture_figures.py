@@ -407,7 +407,7 @@ def quartic_conventions_figure(P, rows: Mapping[float, tuple]):
 
 
 def domain_and_patch_figure(F):
-    """Lecture 05, ``nb05-026`` (DeRose & Barsky 1985, Fig. 6): the domain and the patch."""
+    """Lecture 06, ``nb06-026`` (DeRose & Barsky 1985, Fig. 6): the domain and the patch."""
     from .surface_figures import plot_domain_and_patch
 
     fig, ax = new_figure(figsize=(7, 5.5), projection="3d")
@@ -417,7 +417,7 @@ def domain_and_patch_figure(F):
 
 
 def parameter_lines_figure(F, to_uv):
-    """Lecture 05, ``nb05-033`` (Fig. 8): parameter lines of ``F`` and of ``F∘to_uv``."""
+    """Lecture 06, ``nb06-033`` (Fig. 8): parameter lines of ``F`` and of ``F∘to_uv``."""
     from .surface_figures import plot_parameter_lines
 
     fig, (a1, a2) = new_figure(1, 2, figsize=(8.8, 4.2), projection="3d")
@@ -429,7 +429,7 @@ def parameter_lines_figure(F, to_uv):
 
 
 def patch_pairs_figure(F, pairs: Mapping[str, object]):
-    """Lecture 05, ``nb05-047`` (Fig. 7): per ``title: G`` the pair F, G with the normals of
+    """Lecture 06, ``nb06-047`` (Fig. 7): per ``title: G`` the pair F, G with the normals of
     both along their common boundary, seen from one low angle."""
     from .surfaces3d import plot_patch_pair
 
@@ -442,9 +442,9 @@ def patch_pairs_figure(F, pairs: Mapping[str, object]):
     return fig
 
 
-# ------------------------------------------------------------------------ lecture 06
+# ------------------------------------------------------------------------ lecture 07
 def glyph_points_figure(outline, implied):
-    """Lecture 06, ``nb06-007``: a glyph's points and segments, its ``implied`` on-curve
+    """Lecture 07, ``nb07-007``: a glyph's points and segments, its ``implied`` on-curve
     points marked."""
     from .outlines import plot_outline
 
@@ -480,7 +480,7 @@ def _kind_legend(fig, kinds):
 
 
 def glyphs_figure(glyphs: Mapping[str, object]):
-    """Lecture 06, ``nb06-014``: each glyph with its curvature comb and joints, two per row."""
+    """Lecture 07, ``nb07-014``: each glyph with its curvature comb and joints, two per row."""
     from .outlines import plot_outline
 
     rows = (len(glyphs) + 1) // 2
@@ -495,7 +495,7 @@ def glyphs_figure(glyphs: Mapping[str, object]):
 
 
 def outlines_figure(outlines, **style):
-    """Lecture 06, ``nb06-022``: outlines side by side with combs, titled by their names."""
+    """Lecture 07, ``nb07-022``: outlines side by side with combs, titled by their names."""
     from .outlines import plot_outline
 
     fig, axes = new_figure(1, len(outlines), figsize=(8.8, 4.2))
