@@ -4,7 +4,7 @@
 
 # %% [markdown]
 # *Geometric continuity of parametric curves* · Homework 5 of 5 · after the lecture
-# [07 Are letters smooth?](../notebooks/07_are_letters_smooth.ipynb) (TrueType outlines, implied
+# [08 Are letters smooth?](../notebooks/08_are_letters_smooth.ipynb) (TrueType outlines, implied
 # points, curvature combs; Beta-splines of seed 000 §10.1–10.2).
 #
 # # Homework 5 — Are letters smooth?
