@@ -56,9 +56,10 @@ def test_lecture_notebooks_exist_in_course_order():
         "02_beta_constraints.ipynb",
         "03_curvature_of_plane_curves.ipynb",
         "04_g1_knot_bezier_splines.ipynb",
-        "05_beta_splines.ipynb",
-        "06_higher_order.ipynb",
-        "07_surfaces.ipynb",
-        "08_are_letters_smooth.ipynb",
+        "05_stitching_bezier_curves.ipynb",
+        "06_beta_splines.ipynb",
+        "07_higher_order.ipynb",
+        "08_surfaces.ipynb",
+        "09_are_letters_smooth.ipynb",
     ]
     assert [n for n in names if n in expected] == expected

@@ -1,4 +1,4 @@
-"""The tools of lecture 06, *Higher order* (``notebooks/06_higher_order.ipynb``).
+"""The tools of lecture 06, *Beta-splines* (``notebooks/06_beta_splines.ipynb``).
 
 The lecture opens with ``from course_lib.lessons.l06 import *``; every name below is
 defined and documented in the module it is imported from.
@@ -6,31 +6,45 @@ defined and documented in the module it is imported from.
 
 from __future__ import annotations
 
-from ..beta_constraints import beta_coefficients
-from ..beta_splines import cubic_beta_spline
-from ..checks.lectures import check_number, quiz
+from .. import PiecewiseBezier
+from ..beta_splines import cubic_beta_spline, design_beta_spline, quadratic_beta_spline
+from ..checks.lectures import check_number
 from ..continuity import curve_continuity
-from ..higher_order import beta_spline, gn_beta_spline_basis, quartic_beta_spline
-from ..plotting import new_figure, plot_control_polygon, plot_curve
-from ..plotting.lecture_figures import quartic_conventions_figure
-from ..seed_formulas import blending_basis, blending_system, inverse_betas
-from ..widgets import quartic_beta_spline_demo
+from ..plotting import new_figure, plot_control_polygon, plot_curvature_profile, plot_curve
+from ..plotting.constructions import plot_beta_spline_construction
+from ..plotting.lecture_figures import (
+    cubic_beta_spline_figure,
+    curvature_profiles_figure,
+    quadratic_beta_spline_figure,
+)
+from ..seed_formulas import (
+    blending_basis,
+    blending_system,
+    cubic_beta_spline_printed,
+    cubic_beta_spline_reciprocal,
+    gamma_printed,
+)
+from ..widgets import beta_spline_demo
 
 __all__ = [
-    "beta_coefficients",
-    "beta_spline",
+    "PiecewiseBezier",
+    "beta_spline_demo",
     "blending_basis",
     "blending_system",
     "check_number",
     "cubic_beta_spline",
+    "cubic_beta_spline_figure",
+    "cubic_beta_spline_printed",
+    "cubic_beta_spline_reciprocal",
+    "curvature_profiles_figure",
     "curve_continuity",
-    "gn_beta_spline_basis",
-    "inverse_betas",
+    "design_beta_spline",
+    "gamma_printed",
     "new_figure",
+    "plot_beta_spline_construction",
     "plot_control_polygon",
+    "plot_curvature_profile",
     "plot_curve",
-    "quartic_beta_spline",
-    "quartic_beta_spline_demo",
-    "quartic_conventions_figure",
-    "quiz",
+    "quadratic_beta_spline",
+    "quadratic_beta_spline_figure",
 ]

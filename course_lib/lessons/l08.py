@@ -1,4 +1,4 @@
-"""The tools of lecture 08, *Are letters smooth?* (``notebooks/08_are_letters_smooth.ipynb``).
+"""The tools of lecture 08, *Geometric continuity of surfaces* (``notebooks/08_surfaces.ipynb``).
 
 The lecture opens with ``from course_lib.lessons.l08 import *``; every name below is
 defined and documented in the module it is imported from.
@@ -6,40 +6,25 @@ defined and documented in the module it is imported from.
 
 from __future__ import annotations
 
-from ..beta_splines import cubic_beta_spline, quadratic_beta_spline
-from ..checks.lectures import check_number, quiz
-from ..continuity import curve_continuity, joint_continuity
-from ..outlines import (
-    Contour,
-    Outline,
-    classify_joints,
-    font_summary,
-    glyph_outline,
-    glyph_summary,
-    svg_outline,
+from ..checks.lectures import check_number
+from ..plotting.lecture_figures import (
+    domain_and_patch_figure,
+    parameter_lines_figure,
+    patch_pairs_figure,
 )
-from ..plotting import new_figure, plot_outline
-from ..plotting.lecture_figures import glyph_points_figure, glyphs_figure, outlines_figure
-from ..widgets import glyph_demo
+from ..plotting.surface_figures import plot_domain_and_patch, plot_parameter_lines
+from ..plotting.surfaces3d import plot_patch_pair
+from ..surfaces import BezierPatch, g1_neighbour_patch, tangent_plane_continuity
 
 __all__ = [
-    "Contour",
-    "Outline",
+    "BezierPatch",
     "check_number",
-    "classify_joints",
-    "cubic_beta_spline",
-    "curve_continuity",
-    "font_summary",
-    "glyph_demo",
-    "glyph_outline",
-    "glyph_points_figure",
-    "glyph_summary",
-    "glyphs_figure",
-    "joint_continuity",
-    "new_figure",
-    "outlines_figure",
-    "plot_outline",
-    "quadratic_beta_spline",
-    "quiz",
-    "svg_outline",
+    "domain_and_patch_figure",
+    "g1_neighbour_patch",
+    "parameter_lines_figure",
+    "patch_pairs_figure",
+    "plot_domain_and_patch",
+    "plot_parameter_lines",
+    "plot_patch_pair",
+    "tangent_plane_continuity",
 ]

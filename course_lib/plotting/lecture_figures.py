@@ -130,7 +130,7 @@ def catmull_rom_figure(P, curves: Mapping[float, object]):
 
 
 def quadratic_beta_spline_figure(quad, P, betas):
-    """Lecture 05, ``nb05-048`` (Fig. 10): the quadratic G1 Beta-spline's construction;
+    """Lecture 06, ``nb06-048`` (Fig. 10): the quadratic G1 Beta-spline's construction;
     ``betas`` are the β1 of its joints (for the title)."""
     fig, ax = new_figure(figsize=(8.8, 3.8))
     plot_beta_spline_construction(ax, quad, P)
@@ -141,7 +141,7 @@ def quadratic_beta_spline_figure(quad, P, betas):
 
 
 def cubic_beta_spline_figure(cubic, P):
-    """Lecture 05, ``nb05-062`` (Fig. 11 a, b): interior vertices, then junctions and curve."""
+    """Lecture 06, ``nb06-062`` (Fig. 11 a, b): interior vertices, then junctions and curve."""
     fig, (a1, a2) = new_figure(2, 1, figsize=(8.8, 6.4))
     plot_beta_spline_construction(a1, cubic, P, show="interior")
     plot_beta_spline_construction(a2, cubic, P)
@@ -155,7 +155,7 @@ def cubic_beta_spline_figure(cubic, P):
 
 
 def curvature_profiles_figure(curves: Mapping[str, object]):
-    """Lecture 05, ``nb05-062b``: κ against arc length, one panel per ``title: curve``."""
+    """Lecture 06, ``nb06-062b``: κ against arc length, one panel per ``title: curve``."""
     fig, axes = new_figure(1, len(curves), figsize=(8.8, 3.2))
     for ax, (title, curve) in zip(np.atleast_1d(axes), curves.items(), strict=True):
         plot_curvature_profile(ax, curve)
@@ -384,9 +384,9 @@ def knot_joint_figure(spline, joint: int, title: str):
     return fig
 
 
-# ------------------------------------------------------------------------ lecture 06
+# ------------------------------------------------------------------------ lecture 07
 def quartic_conventions_figure(P, rows: Mapping[float, tuple]):
-    """Lecture 06, ``nb06-021`` (DeRose & Barsky 1985, Fig. 5): per ``β2: (course, 1985)``
+    """Lecture 07, ``nb07-021`` (DeRose & Barsky 1985, Fig. 5): per ``β2: (course, 1985)``
     a row of two quartic Beta-splines on the polygon ``P``, the course's reading left and the
     1985 paper's right.  Every panel has the same limits (the polygon's, with a margin), so
     the polygons compare point by point; a curve that leaves the frame is clipped."""
@@ -407,7 +407,7 @@ def quartic_conventions_figure(P, rows: Mapping[float, tuple]):
 
 
 def domain_and_patch_figure(F):
-    """Lecture 07, ``nb07-026`` (DeRose & Barsky 1985, Fig. 6): the domain and the patch."""
+    """Lecture 08, ``nb08-026`` (DeRose & Barsky 1985, Fig. 6): the domain and the patch."""
     from .surface_figures import plot_domain_and_patch
 
     fig, ax = new_figure(figsize=(7, 5.5), projection="3d")
@@ -417,7 +417,7 @@ def domain_and_patch_figure(F):
 
 
 def parameter_lines_figure(F, to_uv):
-    """Lecture 07, ``nb07-033`` (Fig. 8): parameter lines of ``F`` and of ``F∘to_uv``."""
+    """Lecture 08, ``nb08-033`` (Fig. 8): parameter lines of ``F`` and of ``F∘to_uv``."""
     from .surface_figures import plot_parameter_lines
 
     fig, (a1, a2) = new_figure(1, 2, figsize=(8.8, 4.2), projection="3d")
@@ -429,7 +429,7 @@ def parameter_lines_figure(F, to_uv):
 
 
 def patch_pairs_figure(F, pairs: Mapping[str, object]):
-    """Lecture 07, ``nb07-047`` (Fig. 7): per ``title: G`` the pair F, G with the normals of
+    """Lecture 08, ``nb08-047`` (Fig. 7): per ``title: G`` the pair F, G with the normals of
     both along their common boundary, seen from one low angle."""
     from .surfaces3d import plot_patch_pair
 
@@ -442,9 +442,9 @@ def patch_pairs_figure(F, pairs: Mapping[str, object]):
     return fig
 
 
-# ------------------------------------------------------------------------ lecture 08
+# ------------------------------------------------------------------------ lecture 09
 def glyph_points_figure(outline, implied):
-    """Lecture 08, ``nb08-007``: a glyph's points and segments, its ``implied`` on-curve
+    """Lecture 09, ``nb09-007``: a glyph's points and segments, its ``implied`` on-curve
     points marked."""
     from .outlines import plot_outline
 
@@ -480,7 +480,7 @@ def _kind_legend(fig, kinds):
 
 
 def glyphs_figure(glyphs: Mapping[str, object]):
-    """Lecture 08, ``nb08-014``: each glyph with its curvature comb and joints, two per row."""
+    """Lecture 09, ``nb09-014``: each glyph with its curvature comb and joints, two per row."""
     from .outlines import plot_outline
 
     rows = (len(glyphs) + 1) // 2
@@ -495,7 +495,7 @@ def glyphs_figure(glyphs: Mapping[str, object]):
 
 
 def outlines_figure(outlines, **style):
-    """Lecture 08, ``nb08-022``: outlines side by side with combs, titled by their names."""
+    """Lecture 09, ``nb09-022``: outlines side by side with combs, titled by their names."""
     from .outlines import plot_outline
 
     fig, axes = new_figure(1, len(outlines), figsize=(8.8, 4.2))

@@ -451,7 +451,7 @@ def test_patch_pair_normals_along_the_boundary():
 
 
 def test_patch_pair_zoom_fills_a_laptop_sized_figure():
-    """Lecture 07's pair: two 3D panels in 8.2 inches (≤ 900 px at 100 dpi, with the
+    """Lecture 08's pair: two 3D panels in 8.2 inches (≤ 900 px at 100 dpi, with the
     file browser open on a 1366 px laptop); zoom trims the empty margin of each 3D box."""
     from io import BytesIO
 
