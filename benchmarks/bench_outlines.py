@@ -1,4 +1,4 @@
-"""Item 7: classify every joint of every glyph of DejaVu Sans (lecture 06).
+"""Item 7: classify every joint of every glyph of DejaVu Sans (lecture 09).
 
 ``course_lib.outlines.font_summary`` reads each glyph (fontTools, implied on-curve
 points made explicit) and classifies all its joints with the vectorized classifier.

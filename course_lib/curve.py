@@ -16,7 +16,7 @@ parameter), of any degree ``>= 1``.  A knot sequence ``t_0 < t_1 < ... < t_S``
 parameter carry the chain-rule factor ``(t_{i+1} - t_i)^{-n}``.
 
 Lesson: ``notebooks/01_reparametrization.ipynb`` (piecewise curves and joints),
-``notebooks/03_g1_knot_bezier_splines.ipynb`` (the global parameter).
+``notebooks/04_g1_knot_bezier_splines.ipynb`` (the global parameter).
 """
 
 from __future__ import annotations

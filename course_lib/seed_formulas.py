@@ -14,8 +14,8 @@ Conventions
     ``inverse_betas`` of 000's (and vice versa: the map is an involution).
 
 Lectures: ``notebooks/02_beta_constraints.ipynb`` (conventions),
-``notebooks/04_beta_splines.ipynb`` (seed 000 §10), ``notebooks/05_higher_order_and_surfaces.ipynb``
-(seed 001 Ex. 2.1), ``notebooks/03_g1_knot_bezier_splines.ipynb`` (seed 004 §19.6).
+``notebooks/06_beta_splines.ipynb`` (seed 000 §10), ``notebooks/07_higher_order.ipynb``
+(seed 001 Ex. 2.1), ``notebooks/04_g1_knot_bezier_splines.ipynb`` (seed 004 §19.6).
 """
 
 from __future__ import annotations

@@ -131,7 +131,7 @@ def quad_spline_vectorized(V, b):
     return np.stack([J[:-1], V[1:-1], J[1:]], axis=1)
 
 
-# hw05, by hand: G2 at an implied point iff (B - A) x (P2 - P0) = 0 (lecture 06 §2), relative;
+# hw05, by hand: G2 at an implied point iff (B - A) x (P2 - P0) = 0 (lecture 09 §2), relative;
 # a G2 run: the uniform cubic B-spline on 2V0 - V1, V0..Vn, 2Vn - Vn-1, each span a, b, c, d
 # converted to Bézier form (a + 4b + c)/6, (2b + c)/3, (b + 2c)/3, (b + 4c + d)/6.
 def _cross2(u, w):

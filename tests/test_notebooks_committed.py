@@ -54,8 +54,12 @@ def test_lecture_notebooks_exist_in_course_order():
         "00_welcome.ipynb",
         "01_reparametrization.ipynb",
         "02_beta_constraints.ipynb",
-        "03_g1_knot_bezier_splines.ipynb",
-        "04_beta_splines.ipynb",
-        "05_higher_order_and_surfaces.ipynb",
+        "03_curvature_of_plane_curves.ipynb",
+        "04_g1_knot_bezier_splines.ipynb",
+        "05_stitching_bezier_curves.ipynb",
+        "06_beta_splines.ipynb",
+        "07_higher_order.ipynb",
+        "08_surfaces.ipynb",
+        "09_are_letters_smooth.ipynb",
     ]
     assert [n for n in names if n in expected] == expected

@@ -1,4 +1,4 @@
-"""The tools of lecture 05, *Higher order and surfaces* (``notebooks/05_higher_order_and_surfaces.ipynb``).
+"""The tools of lecture 05, *Stitching Bézier curves* (``notebooks/05_stitching_bezier_curves.ipynb``).
 
 The lecture opens with ``from course_lib.lessons.l05 import *``; every name below is
 defined and documented in the module it is imported from.
@@ -6,48 +6,42 @@ defined and documented in the module it is imported from.
 
 from __future__ import annotations
 
-from ..beta_constraints import beta_coefficients
-from ..beta_splines import cubic_beta_spline
+from .. import PiecewiseBezier, bezier
+from ..catmull_rom import catmull_rom
 from ..checks.lectures import check_number, quiz
 from ..continuity import curve_continuity
-from ..higher_order import beta_spline, gn_beta_spline_basis, quartic_beta_spline
 from ..plotting import new_figure, plot_control_polygon, plot_curve
+from ..plotting.constructions import plot_farin_boehm, plot_stitching
 from ..plotting.lecture_figures import (
-    domain_and_patch_figure,
-    parameter_lines_figure,
-    patch_pairs_figure,
-    quartic_conventions_figure,
+    bezier_figure,
+    catmull_rom_figure,
+    degree_raising_figure,
+    farin_boehm_figure,
+    g1_stitching_figure,
 )
-from ..plotting.surface_figures import plot_domain_and_patch, plot_parameter_lines
-from ..plotting.surfaces3d import plot_patch_pair
-from ..seed_formulas import blending_basis, blending_system, inverse_betas
-from ..surfaces import BezierPatch, g1_neighbour_patch, tangent_plane_continuity
-from ..widgets import quartic_beta_spline_demo
+from ..stitching import farin_boehm, g1_stitch, g2_stitch
+from ..widgets import catmull_rom_demo, g2_stitch_demo
 
 __all__ = [
-    "BezierPatch",
-    "beta_coefficients",
-    "beta_spline",
-    "blending_basis",
-    "blending_system",
+    "PiecewiseBezier",
+    "bezier",
+    "bezier_figure",
+    "catmull_rom",
+    "catmull_rom_demo",
+    "catmull_rom_figure",
     "check_number",
-    "cubic_beta_spline",
     "curve_continuity",
-    "domain_and_patch_figure",
-    "g1_neighbour_patch",
-    "gn_beta_spline_basis",
-    "inverse_betas",
+    "degree_raising_figure",
+    "farin_boehm",
+    "farin_boehm_figure",
+    "g1_stitch",
+    "g1_stitching_figure",
+    "g2_stitch",
+    "g2_stitch_demo",
     "new_figure",
-    "parameter_lines_figure",
-    "patch_pairs_figure",
     "plot_control_polygon",
     "plot_curve",
-    "plot_domain_and_patch",
-    "plot_parameter_lines",
-    "plot_patch_pair",
-    "quartic_beta_spline",
-    "quartic_beta_spline_demo",
-    "quartic_conventions_figure",
+    "plot_farin_boehm",
+    "plot_stitching",
     "quiz",
-    "tangent_plane_continuity",
 ]

@@ -1,4 +1,4 @@
-"""The tools of lecture 06, *Are letters smooth?* (``notebooks/06_are_letters_smooth.ipynb``).
+"""The tools of lecture 06, *Beta-splines* (``notebooks/06_beta_splines.ipynb``).
 
 The lecture opens with ``from course_lib.lessons.l06 import *``; every name below is
 defined and documented in the module it is imported from.
@@ -6,40 +6,45 @@ defined and documented in the module it is imported from.
 
 from __future__ import annotations
 
-from ..beta_splines import cubic_beta_spline, quadratic_beta_spline
-from ..checks.lectures import check_number, quiz
-from ..continuity import curve_continuity, joint_continuity
-from ..outlines import (
-    Contour,
-    Outline,
-    classify_joints,
-    font_summary,
-    glyph_outline,
-    glyph_summary,
-    svg_outline,
+from .. import PiecewiseBezier
+from ..beta_splines import cubic_beta_spline, design_beta_spline, quadratic_beta_spline
+from ..checks.lectures import check_number
+from ..continuity import curve_continuity
+from ..plotting import new_figure, plot_control_polygon, plot_curvature_profile, plot_curve
+from ..plotting.constructions import plot_beta_spline_construction
+from ..plotting.lecture_figures import (
+    cubic_beta_spline_figure,
+    curvature_profiles_figure,
+    quadratic_beta_spline_figure,
 )
-from ..plotting import new_figure, plot_outline
-from ..plotting.lecture_figures import glyph_points_figure, glyphs_figure, outlines_figure
-from ..widgets import glyph_demo
+from ..seed_formulas import (
+    blending_basis,
+    blending_system,
+    cubic_beta_spline_printed,
+    cubic_beta_spline_reciprocal,
+    gamma_printed,
+)
+from ..widgets import beta_spline_demo
 
 __all__ = [
-    "Contour",
-    "Outline",
+    "PiecewiseBezier",
+    "beta_spline_demo",
+    "blending_basis",
+    "blending_system",
     "check_number",
-    "classify_joints",
     "cubic_beta_spline",
+    "cubic_beta_spline_figure",
+    "cubic_beta_spline_printed",
+    "cubic_beta_spline_reciprocal",
+    "curvature_profiles_figure",
     "curve_continuity",
-    "font_summary",
-    "glyph_demo",
-    "glyph_outline",
-    "glyph_points_figure",
-    "glyph_summary",
-    "glyphs_figure",
-    "joint_continuity",
+    "design_beta_spline",
+    "gamma_printed",
     "new_figure",
-    "outlines_figure",
-    "plot_outline",
+    "plot_beta_spline_construction",
+    "plot_control_polygon",
+    "plot_curvature_profile",
+    "plot_curve",
     "quadratic_beta_spline",
-    "quiz",
-    "svg_outline",
+    "quadratic_beta_spline_figure",
 ]

@@ -59,9 +59,9 @@ def _bezier(points):
     return PiecewiseBezier([np.asarray(points, dtype=float)])
 
 
-# ------------------------------------------------------------------------ lecture 04
+# ------------------------------------------------------------------------ lecture 05
 def bezier_figure(V):
-    """Lecture 04, ``nb04-005`` (Barsky & DeRose 1988, Fig. 4): a cubic and its polygon."""
+    """Lecture 05, ``nb05-005`` (Barsky & DeRose 1988, Fig. 4): a cubic and its polygon."""
     fig, ax = new_figure(figsize=(6.5, 4.4))
     plot_curve(ax, _bezier(V), points=False)
     plot_control_polygon(ax, V, labels="$V_{i}$", linestyle="none")
@@ -72,7 +72,7 @@ def bezier_figure(V):
 
 
 def degree_raising_figure(V, W):
-    """Lecture 04, ``nb04-013`` (Fig. 5): the cubic polygon ``V`` (grey), the quartic ``W``."""
+    """Lecture 05, ``nb05-013`` (Fig. 5): the cubic polygon ``V`` (grey), the quartic ``W``."""
     fig, ax = new_figure(figsize=(6.5, 4.4))
     plot_curve(ax, _bezier(W), points=False)
     plot_control_polygon(ax, V, labels=["", "$V_1$", "$V_2$", ""], color=ROLE_COLORS["polygon"])
@@ -84,7 +84,7 @@ def degree_raising_figure(V, W):
 
 
 def g1_stitching_figure(q_poly, stitched, beta1: float):
-    """Lecture 04, ``nb04-019`` (Figs. 6 and 7): the situation, then the G1 construction."""
+    """Lecture 05, ``nb05-019`` (Figs. 6 and 7): the situation, then the G1 construction."""
     fig, (a1, a2) = new_figure(2, 1, figsize=(8.8, 5.6))
     plot_curve(a1, stitched, points=False)
     plot_control_polygon(a1, q_poly, labels="$V_{i}$", linestyle="none")
@@ -99,7 +99,7 @@ def g1_stitching_figure(q_poly, stitched, beta1: float):
 
 
 def farin_boehm_figure(q_poly, stitched, fb, beta1: float):
-    """Lecture 04, ``nb04-028`` (Fig. 8): the Farin–Boehm construction with its lengths."""
+    """Lecture 05, ``nb05-028`` (Fig. 8): the Farin–Boehm construction with its lengths."""
     fig, ax = new_figure(figsize=(8.6, 4.4))
     plot_farin_boehm(ax, q_poly, stitched.segments[1], fb.T, beta1, fb.gamma, lengths=True)
     ax.set_title("Farin–Boehm: G2 stitching, β₁ = 1, β₂ = 1")
@@ -107,7 +107,7 @@ def farin_boehm_figure(q_poly, stitched, fb, beta1: float):
 
 
 def catmull_rom_figure(P, curves: Mapping[float, object]):
-    """Lecture 04, ``nb04-044`` (Fig. 9): one panel per β1, and all of them overlaid."""
+    """Lecture 05, ``nb05-044`` (Fig. 9): one panel per β1, and all of them overlaid."""
     colors = ("black", OKABE_ITO["bluish_green"], OKABE_ITO["reddish_purple"])
     fig, axs = new_figure(2, 2, figsize=(8.8, 4.6))
     for ax, (beta, cr), color in zip(axs.flat, curves.items(), colors, strict=False):
@@ -130,7 +130,7 @@ def catmull_rom_figure(P, curves: Mapping[float, object]):
 
 
 def quadratic_beta_spline_figure(quad, P, betas):
-    """Lecture 04, ``nb04-048`` (Fig. 10): the quadratic G1 Beta-spline's construction;
+    """Lecture 06, ``nb06-048`` (Fig. 10): the quadratic G1 Beta-spline's construction;
     ``betas`` are the β1 of its joints (for the title)."""
     fig, ax = new_figure(figsize=(8.8, 3.8))
     plot_beta_spline_construction(ax, quad, P)
@@ -141,7 +141,7 @@ def quadratic_beta_spline_figure(quad, P, betas):
 
 
 def cubic_beta_spline_figure(cubic, P):
-    """Lecture 04, ``nb04-062`` (Fig. 11 a, b): interior vertices, then junctions and curve."""
+    """Lecture 06, ``nb06-062`` (Fig. 11 a, b): interior vertices, then junctions and curve."""
     fig, (a1, a2) = new_figure(2, 1, figsize=(8.8, 6.4))
     plot_beta_spline_construction(a1, cubic, P, show="interior")
     plot_beta_spline_construction(a2, cubic, P)
@@ -155,7 +155,7 @@ def cubic_beta_spline_figure(cubic, P):
 
 
 def curvature_profiles_figure(curves: Mapping[str, object]):
-    """Lecture 04, ``nb04-062b``: κ against arc length, one panel per ``title: curve``."""
+    """Lecture 06, ``nb06-062b``: κ against arc length, one panel per ``title: curve``."""
     fig, axes = new_figure(1, len(curves), figsize=(8.8, 3.2))
     for ax, (title, curve) in zip(np.atleast_1d(axes), curves.items(), strict=True):
         plot_curvature_profile(ax, curve)
@@ -341,7 +341,7 @@ def closeness_figure(circle, others, t):
 
 
 def g1_joint_figure(curve, p):
-    """Lecture 03, ``nb03-040`` (Finn, Fig. 4): two cubics joined G1 and their points p_i."""
+    """Lecture 04, ``nb04-040`` (Finn, Fig. 4): two cubics joined G1 and their points p_i."""
     fig, ax = new_figure(figsize=(8, 3.8))
     plot_curve(ax, curve)
     plot_control_polygon(ax, p, labels="$p_{i}$", linestyle="none")
@@ -350,7 +350,7 @@ def g1_joint_figure(curve, p):
 
 
 def splines_figure(splines: Mapping[str, object], *, control_points=False, reference=None):
-    """Lecture 03, ``nb03-048``, ``nb03-050``, ``nb03-061``: one panel per ``title: spline``;
+    """Lecture 04, ``nb04-048``, ``nb04-050``, ``nb04-061``: one panel per ``title: spline``;
     with ``control_points`` the Bézier points and joints too; a ``reference`` spline is drawn
     under each panel in grey, so that the joints' shifts stand out."""
     fig, axs = new_figure(1, len(splines), figsize=(8.8, 2.9 if len(splines) < 3 else 2.7))
@@ -375,7 +375,7 @@ def splines_figure(splines: Mapping[str, object], *, control_points=False, refer
 
 
 def knot_joint_figure(spline, joint: int, title: str):
-    """Lecture 03, ``nb03-057`` (Finn, Fig. 7): a copy of the knot interval beside a leg."""
+    """Lecture 04, ``nb04-057`` (Finn, Fig. 7): a copy of the knot interval beside a leg."""
     from .constructions import plot_knot_joint_construction
 
     fig, ax = new_figure(figsize=(8.6, 4))
@@ -384,9 +384,9 @@ def knot_joint_figure(spline, joint: int, title: str):
     return fig
 
 
-# ------------------------------------------------------------------------ lecture 05
+# ------------------------------------------------------------------------ lecture 07
 def quartic_conventions_figure(P, rows: Mapping[float, tuple]):
-    """Lecture 05, ``nb05-021`` (DeRose & Barsky 1985, Fig. 5): per ``β2: (course, 1985)``
+    """Lecture 07, ``nb07-021`` (DeRose & Barsky 1985, Fig. 5): per ``β2: (course, 1985)``
     a row of two quartic Beta-splines on the polygon ``P``, the course's reading left and the
     1985 paper's right.  Every panel has the same limits (the polygon's, with a margin), so
     the polygons compare point by point; a curve that leaves the frame is clipped."""
@@ -407,7 +407,7 @@ def quartic_conventions_figure(P, rows: Mapping[float, tuple]):
 
 
 def domain_and_patch_figure(F):
-    """Lecture 05, ``nb05-026`` (DeRose & Barsky 1985, Fig. 6): the domain and the patch."""
+    """Lecture 08, ``nb08-026`` (DeRose & Barsky 1985, Fig. 6): the domain and the patch."""
     from .surface_figures import plot_domain_and_patch
 
     fig, ax = new_figure(figsize=(7, 5.5), projection="3d")
@@ -417,7 +417,7 @@ def domain_and_patch_figure(F):
 
 
 def parameter_lines_figure(F, to_uv):
-    """Lecture 05, ``nb05-033`` (Fig. 8): parameter lines of ``F`` and of ``F∘to_uv``."""
+    """Lecture 08, ``nb08-033`` (Fig. 8): parameter lines of ``F`` and of ``F∘to_uv``."""
     from .surface_figures import plot_parameter_lines
 
     fig, (a1, a2) = new_figure(1, 2, figsize=(8.8, 4.2), projection="3d")
@@ -429,7 +429,7 @@ def parameter_lines_figure(F, to_uv):
 
 
 def patch_pairs_figure(F, pairs: Mapping[str, object]):
-    """Lecture 05, ``nb05-047`` (Fig. 7): per ``title: G`` the pair F, G with the normals of
+    """Lecture 08, ``nb08-047`` (Fig. 7): per ``title: G`` the pair F, G with the normals of
     both along their common boundary, seen from one low angle."""
     from .surfaces3d import plot_patch_pair
 
@@ -442,9 +442,9 @@ def patch_pairs_figure(F, pairs: Mapping[str, object]):
     return fig
 
 
-# ------------------------------------------------------------------------ lecture 06
+# ------------------------------------------------------------------------ lecture 09
 def glyph_points_figure(outline, implied):
-    """Lecture 06, ``nb06-007``: a glyph's points and segments, its ``implied`` on-curve
+    """Lecture 09, ``nb09-007``: a glyph's points and segments, its ``implied`` on-curve
     points marked."""
     from .outlines import plot_outline
 
@@ -480,7 +480,7 @@ def _kind_legend(fig, kinds):
 
 
 def glyphs_figure(glyphs: Mapping[str, object]):
-    """Lecture 06, ``nb06-014``: each glyph with its curvature comb and joints, two per row."""
+    """Lecture 09, ``nb09-014``: each glyph with its curvature comb and joints, two per row."""
     from .outlines import plot_outline
 
     rows = (len(glyphs) + 1) // 2
@@ -495,7 +495,7 @@ def glyphs_figure(glyphs: Mapping[str, object]):
 
 
 def outlines_figure(outlines, **style):
-    """Lecture 06, ``nb06-022``: outlines side by side with combs, titled by their names."""
+    """Lecture 09, ``nb09-022``: outlines side by side with combs, titled by their names."""
     from .outlines import plot_outline
 
     fig, axes = new_figure(1, len(outlines), figsize=(8.8, 4.2))

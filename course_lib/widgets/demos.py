@@ -278,7 +278,7 @@ def beta_spline_demo(
 
 
 #: Default control polygon of the quartic demo: the polygon of seed 001 Fig. 5 as drawn in
-#: notebook 05 (eight vertices, four quartic segments, three joints).
+#: notebook 07 (eight vertices, four quartic segments, three joints).
 _QUARTIC_DEFAULT = [[0, 0], [1, 2.4], [3, 3], [4, 0.6], [6, 0.2], [7, 2.6], [9, 3], [10, 0.4]]
 
 

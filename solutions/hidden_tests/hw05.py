@@ -175,7 +175,7 @@ def q2(student, data):
 
     def case(points, angle, scale, kind):
         def run():
-            # exact: G2 iff (B - A) x (P2 - P0) == 0 in rationals (lecture 06, §2)
+            # exact: G2 iff (B - A) x (P2 - P0) == 0 in rationals (lecture 09, §2)
             P0, A, B, P2 = ([Fraction(v) for v in p] for p in points)
             expected = _cross((B[0] - A[0], B[1] - A[1]), (P2[0] - P0[0], P2[1] - P0[1])) == 0
             got = answers.boolean(func(*_rotated(points, angle, scale)), "implied_is_g2's result")

@@ -1,6 +1,6 @@
-"""Lecture mode in a real browser: ``make present L=04`` at 1920×1080 (and 1366×768).
+"""Lecture mode in a real browser: ``make present L=05`` at 1920×1080 (and 1366×768).
 
-``tools/present.py`` builds the deck of lecture 04 and Voilà serves it with the course's
+``tools/present.py`` builds the deck of lecture 05 and Voilà serves it with the course's
 ``course-deck`` template and a pre-heated kernel, exactly as ``make present`` does (here on
 a free port, in a temporary folder).  Once the kernel has executed the deck, Chromium opens
 the page at 1920×1080 and the test
@@ -27,7 +27,7 @@ import pytest
 from browser_harness import WAIT_MS, WAIT_S, make_server, new_page
 
 ROOT = Path(__file__).resolve().parents[2]
-LECTURE = "04"
+LECTURE = "05"
 pytestmark = [pytest.mark.browser, pytest.mark.slow]
 
 

@@ -452,7 +452,7 @@ def test_hw05_q5_phantom_vertices_keep_the_corners_and_their_tangents(points):
 @settings(max_examples=80, deadline=None)
 @given(st.lists(_GRID, min_size=4, max_size=4, unique=True), st.integers(-3, 3), st.booleans())
 def test_hw05_q2_the_cross_product_test_agrees_with_classify_joints(points, s, parallel):
-    # the criterion of hw05 q2 (lecture 06 §2) against the outline classifier on a real
+    # the criterion of hw05 q2 (lecture 09 §2) against the outline classifier on a real
     # TrueType contour P0 (on), A, B (off), P2 (on): its first joint is the implied M
     from course_lib.outlines import Outline, classify_joints, truetype_contour
 
@@ -488,4 +488,4 @@ def test_lecture_numeric_checks_pass_right_and_fail_wrong_answers():
     assert not check_number("lecture01.q3", right + 0.5).passed
     assert check_number("lecture01.q3", ...).status == "not answered"
     assert not check_number("lecture09.q9", 1.0).passed
-    assert "10" not in check_number("lecture05.q2", 3).message
+    assert "10" not in check_number("lecture08.q1", 3).message

@@ -190,7 +190,7 @@ def test_bad_input(call, match):
 
 @pytest.mark.parametrize("betas", [(1.0, -4.0, 0.0), (0.5, 0.0, -39.375)])
 def test_singular_quartic_shape_parameters_are_refused(betas):
-    # Independent derivation (sympy, notebook 05's blending equations): the quartic basis is
+    # Independent derivation (sympy, notebook 07's blending equations): the quartic basis is
     # unique unless δ = 6β1⁶ + 18β1⁵ + 30β1⁴ + 36β1³ + 30β1² + 18β1 + 6
     #                   + 6(1 + β1)³β2 + 3β1β2² + (1 − β1²)β3 vanishes.
     # (1, -4, 0): δ = 144 - 192 + 48 = 0;  (1/2, 0, -39.375): δ = 29.53125 - 0.75 * 39.375 = 0.

@@ -330,7 +330,7 @@ def test_knot_joint_construction_links_are_parallel(ax):
 
 def test_knot_joint_construction_offset_sign_chooses_the_side(ax):
     # the knot copy and its labels go to the side the sign of `offset` says, for the notebook
-    # to put them where the curve is not (nb03-057)
+    # to put them where the curve is not (nb04-057)
     c = PiecewiseBezier(
         [[[0, 0], [1, 2], [2, 2], [3, 1]], [[3, 1], [4, 0], [5, 0], [6, 1]]], knots=[0, 1, 3]
     )
@@ -451,7 +451,7 @@ def test_patch_pair_normals_along_the_boundary():
 
 
 def test_patch_pair_zoom_fills_a_laptop_sized_figure():
-    """Lecture 05's pair: two 3D panels in 8.2 inches (≤ 900 px at 100 dpi, with the
+    """Lecture 08's pair: two 3D panels in 8.2 inches (≤ 900 px at 100 dpi, with the
     file browser open on a 1366 px laptop); zoom trims the empty margin of each 3D box."""
     from io import BytesIO
 

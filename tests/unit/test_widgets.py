@@ -547,7 +547,7 @@ def test_quartic_demo_degenerate_drag_warns_instead_of_raising():
 
 def test_quartic_demo_singular_shape_parameters_show_a_warning():
     # β1 = 1/2, β2 = 0: the normalizing denominator 29.53125 + (1 - β1²) β3 vanishes at
-    # β3 = -39.375 (sympy, notebook 05's blending_equations(3, ...))
+    # β3 = -39.375 (sympy, notebook 07's blending_equations(3, ...))
     demo = quartic_beta_spline_demo(beta1=0.5)
     demo.controls["beta3"].value = -39.375  # must not raise out of the callback
     assert "⚠" in demo.warning.value and demo.state.params["beta3"] == 0.0
