@@ -49,6 +49,7 @@ import sympy as sp
 
 from course_lib import PiecewiseBezier, variants
 from course_lib.checks import check, check_all
+from course_lib.plotting import new_figure
 
 HOMEWORK = "hw03"
 VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "KQW7MZP3XS"
@@ -137,8 +138,6 @@ check("hw03.q3", answer_q3)
 ### ALT Finn's G1 control points d as grey dots joined by a dotted line, and the three splines
 ### ALT (a), (b), (c) built from them with different knots, one colour each, their joints marked
 ### ALT by squares: the curves follow the same control points but bend differently near the joints.
-from course_lib.plotting import new_figure  # the course palette (3:1 on white)
-
 fig, ax = new_figure(figsize=(7, 3.2))
 ax.plot(D[:, 0], D[:, 1], "o:", color="0.5", label="G1 control points d")
 for label, P, k in zip("abc", answer_q3, (knots_a, knots_b, knots_c), strict=True):

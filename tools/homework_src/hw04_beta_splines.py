@@ -43,6 +43,7 @@ import numpy as np
 
 from course_lib import PiecewiseBezier, variants
 from course_lib.checks import check, check_all
+from course_lib.plotting import new_figure
 
 HOMEWORK = "hw04"
 VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "KQW7MZP3XS"
@@ -167,8 +168,6 @@ check("hw04.q4", quadratic_beta_spline)
 ### ALT with β1 = 0.5, 1 and 3 at every joint, one colour each: changing β1 changes the shape
 ### ALT while every curve stays tangent-continuous.
 V_demo = np.array([[0, 0], [1, 2], [3, 2.5], [4, 0.5], [6, 1.5]], dtype=float)
-from course_lib.plotting import new_figure  # the course palette (3:1 on white)
-
 fig, ax = new_figure(figsize=(7, 3))
 ax.plot(V_demo[:, 0], V_demo[:, 1], "o:", color="0.5", label="control polygon")
 for b in (0.5, 1.0, 3.0):
