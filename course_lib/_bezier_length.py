@@ -348,6 +348,7 @@ def robust_hodograph_length(H: np.ndarray) -> float:
     and adaptive Gauss-Legendre bisection to :data:`ROBUST_RTOL` where that mesh is not
     certified.
     """
+    own_work.require("course_lib._bezier_length.robust_hodograph_length")
     from .differential_geometry import _integrate_speed
 
     d = H.shape[0]

@@ -507,6 +507,7 @@ def arc_length_derivatives(curve, t: float | np.ndarray, n: int) -> np.ndarray:
     ndarray of shape (n, dim) for a scalar ``t``, or (n, m, dim)
         Row ``k - 1`` is ``d^k c/ds^k``.
     """
+    own_work.require("course_lib.differential_geometry.arc_length_derivatives")
     curve = as_parametrization(curve)
     n = check_chain_rule_order(check_integer(n, "n", minimum=1), "n")
     tt, scalar = _params(curve, t)

@@ -170,6 +170,7 @@ _VALUES = (
         _BY_HAND,
         "differential_geometry.unit_tangent",
         "differential_geometry.frame_from_derivatives",
+        "differential_geometry.arc_length_derivatives",
     ),
     _ex(
         "hw01.q4",
@@ -180,6 +181,7 @@ _VALUES = (
         "differential_geometry.curvature_vector",
         "differential_geometry.osculating_circle",
         "differential_geometry.frame_from_derivatives",
+        "differential_geometry.arc_length_derivatives",
     ),
     _ex(
         "hw01.q5",
@@ -201,6 +203,7 @@ _VALUES = (
         "_bezier_length.segment_length",
         "_bezier_length.segment_lengths",
         "_bezier_length.robust_length",
+        "_bezier_length.robust_hodograph_length",
         "_bezier_length.hodograph_lengths",
         "_bezier_length.piece_lengths",
     ),

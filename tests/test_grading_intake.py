@@ -140,7 +140,8 @@ def test_file_stems_distinct_ignoring_case_and_unclaimable():
     ("value", "cell"),
     [("=HYPERLINK(\"http://x\")", "'=HYPERLINK(\"http://x\")"), ("+1+1", "'+1+1"),
      ("-2+3", "'-2+3"), ("@SUM(A1)", "'@SUM(A1)"), ("\tx", "'\tx"), ("\rx", "'\rx"),
-     ("-0.5", "-0.5"), ("+3e2", "+3e2"), (-1.5, -1.5), (7, 7), ("alice", "alice"),
+     ("-0.5", "-0.5"), ("+3e2", "'+3e2"), ("+1001", "'+1001"), (-1.5, -1.5), (7, 7),
+     ("alice", "alice"),
      ("\ud800", "\\ud800")],
 )  # fmt: skip
 def test_csv_cells_are_never_formulas(value, cell):
@@ -204,3 +205,20 @@ def test_a_manifest_with_lone_surrogates_is_still_written(tmp_path):
     out.add(r)
     out.finish()
     assert "\\ud800" in (tmp_path / "feedback" / "eve.md").read_text(encoding="utf-8")
+
+
+def test_a_link_of_a_roster_student_is_listed_as_a_file_not_opened(tmp_path):
+    """The summary names links for what they are: not 'not in the roster', not 'missing'."""
+    reports = grade.reports
+    roster_csv = tmp_path / "roster.csv"
+    roster_csv.write_text("id,name,email\n1001,Ann,a@x\n1010,Lin,l@x\n1020,Max,m@x\n")
+    roster = reports.read_roster(roster_csv)
+    tests = grade.HiddenTests.load(HIDDEN)
+    ann = grade.Result("1001", dict(tests.points), dict.fromkeys(tests.points, "✓"))
+    ann.lms = {"id": "1001", "name": "Ann", "email": "a@x"}
+    link = grade.Result("1010", dict.fromkeys(tests.points, 0.0), dict.fromkeys(tests.points, ""),
+                        status="a link, not graded")  # fmt: skip
+    text, data = reports.summary([ann, link], tests, roster)
+    act = text.split("## Statistics")[0]
+    assert "Files not opened" in act and "1010 (a link)" in act
+    assert data["not_in_roster"] == [] and data["no_submission"] == ["1020 (Max)"]

@@ -617,6 +617,49 @@ def test_feedback_names_no_hidden_input(qid):
             assert f"{x:g}" not in note and repr(x) not in note, (note, x)
 
 
+@pytest.mark.parametrize("qid", sorted(own_work.EXERCISES))
+def test_an_exception_cannot_carry_a_hidden_input_into_the_feedback(qid):
+    """A function that raises with its inputs in the message (or in its class name) learns only
+    the kind of exception: the red team read the hidden cases this way and resubmitted a table."""
+    hw = qid.split(".")[0]
+    name = own_work.EXERCISES[qid].answer_name
+    numbers = _case_numbers(HIDDEN[hw])
+
+    def leaky(*args):
+        raise ValueError("IN " + repr([np.asarray(a).tolist() for a in args]))
+
+    carrier = type("IN_" + "_".join(str(abs(int(x))) for x in sorted(numbers)[:3]), (Exception,), {})
+
+    def leaky_class(*args):
+        raise carrier("hidden")
+
+    for func, kind in ((leaky, "ValueError"), (leaky_class, "an exception")):
+        fraction, note = _grade(qid, {name: func})
+        assert fraction < 1 and kind in note, note
+        assert "IN " not in note and "IN_" not in note, note
+        for x in numbers:
+            assert repr(x) not in note, (note, x)
+
+
+def test_the_red_team_one_liners_of_hw01_raise_in_hw01():
+    """The three value one-liners a red team scored 6/11 with: arc-length derivatives for the
+    unit tangent (q1) and the curvature (q4), the robust hodograph length for the arc (q7)."""
+    ns = _notebook_namespace("hw01")
+    ns.update(np=np)
+    lines = {
+        "hw01.q1": "from course_lib.differential_geometry import arc_length_derivatives as a\n"
+        "from course_lib.parametrization import ParametricCurve\nimport sympy as sp\n"
+        "t = sp.Symbol('t')\n"
+        "a(ParametricCurve.from_sympy([t, t**2], t, (-9, 9)), 0.5, 1)",
+        "hw01.q7": "from course_lib._bezier_length import robust_hodograph_length as r\n"
+        "r(np.diff([[0.0, 0.0], [0.5, 0.0], [1.0, 1.0]], axis=0))",
+    }
+    for qid, source in lines.items():
+        with pytest.raises(own_work.ExerciseError) as info:
+            exec(source, ns)
+        assert qid in str(info.value) or "hw01.q4" in str(info.value), str(info.value)
+
+
 # ------------------------------------------------------------------ one-liners, and the README
 #: Questions with points that no course_lib function computes (nothing to guard).
 NO_LIBRARY_ROUTE = {

@@ -517,10 +517,25 @@ def summary(
         flagged[flag] = who
         if who:
             lines.append(f"- **{title}** ({len(who)}): " + ", ".join(who))
+    refused = sorted((r.student, r.status) for r in listed if r.status.endswith(", not graded"))
+    if refused:  # links, FIFOs, hard links: never opened (intake.py), never graded
+        data["not_opened"] = [s for s, _ in refused]
+        lines.append(
+            f"- **Files not opened: links or not regular files** ({len(refused)}; 0 points, "
+            "not in the import file; ask the student for the file itself): "
+            + ", ".join(f"{s} ({why.removesuffix(', not graded')})" for s, why in refused)
+        )
     if roster is not None:
         seen = {r.lms["id"] for r in listed if r.lms}
-        unknown = sorted(r.student for r in listed if not r.lms)
-        missing = sorted(_named(e) for e in roster.values() if e.id not in seen)
+        refused_names = {s.lower() for s, _ in refused}
+        unknown = sorted(
+            r.student for r in listed if not r.lms and r.student.lower() not in refused_names
+        )
+        missing = sorted(
+            _named(e)
+            for e in roster.values()
+            if e.id not in seen and not refused_names & {k.lower() for k in (e.id, e.key, *e.aliases) if k}
+        )
         data["not_in_roster"], data["no_submission"] = unknown, missing
         lines += [
             f"- Submissions not in the roster ({len(unknown)}): " + (", ".join(unknown) or "none"),

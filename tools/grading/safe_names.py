@@ -147,14 +147,16 @@ def csv_cell(value: Any) -> Any:
 
     Numbers (``int``/``float``, and text that is exactly a plain decimal number such as
     ``"-0.5"``) are kept; any other text starting with ``=``, ``+``, ``-``, ``@``, a tab or a
-    carriage return gets a leading ``'``.  Text is also made :func:`printable`.
+    carriage return gets a leading ``'`` -- and so does text starting with ``+`` even when it
+    reads as a number: the grader never writes one so, and a student named ``+1001`` must not
+    show as ``1001`` beside the real student 1001.  Text is also made :func:`printable`.
     """
     if isinstance(value, bool) or value is None:
         return value
     if isinstance(value, int | float):
         return value
     text = printable(str(value))
-    if text.startswith(_FORMULA_START) and not _NUMBER.fullmatch(text):
+    if text.startswith(_FORMULA_START) and (text.startswith("+") or not _NUMBER.fullmatch(text)):
         return "'" + text
     return text
 
