@@ -196,7 +196,10 @@ def test_the_import_file_reimports_into_canvas(semester):
     # 11/11 in the homework is 100/100 in Canvas (the export's Points Possible)
     assert scores["1001"] == CANVAS_MAX and scores["1003"] == CANVAS_MAX and scores["1004"] == CANVAS_MAX
     assert scores["1002"] == pytest.approx(CANVAS_MAX * 0.9)  # Canvas said LATE: one started day
-    assert scores["1005"] < FULL
+    # Sam handed in Jane's notebook: her data are not his (the secret is new each run, so a
+    # data question may agree by chance; the copy limit itself is proved with a fixed secret
+    # in test_grading_variants)
+    assert scores["1005"] < CANVAS_MAX / 2
 
 
 def test_every_honest_student_has_full_marks_on_their_own_data(semester):

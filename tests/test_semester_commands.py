@@ -39,7 +39,8 @@ def test_make_grade_passes_every_option_through():
 
 @needs_make
 def test_make_submit_takes_hw3_and_install_says_what_it_does():
-    text = _make_n("submit", "HW=hw3", "STUDENT=s1")
+    # -W pyproject.toml: as on a fresh checkout, where the install step has not run yet
+    text = _make_n("-W", "pyproject.toml", "submit", "HW=hw3", "STUDENT=s1")
     assert 'course_lib.submit "hw3" --student "s1"' in text
     assert "--quiet" not in text and "installing the course" in text
 
