@@ -50,7 +50,6 @@ FLAGS = (NOT_IN_ROSTER, EDITED, ID_DIFFERS, TIMES_DISAGREE, LATE, SEVERAL, WRONG
 
 #: a manifest time more than this after the file's own time cannot be true
 CLOCK_SLACK_SECONDS = 600
-MAX_NOTEBOOK_BYTES = 64 << 20  # larger files are not read here (the grader reports them)
 
 _CANVAS = re.compile(
     r"^(?P<name>[a-z0-9-]+?)_(?:(?P<late>LATE)_)?(?P<uid>\d+)_(?P<sid>\d+)_(?P<file>.+)$"
@@ -131,13 +130,13 @@ def read_notebook_facts(found: Found, data: bytes | None = None, mtime: float | 
         if data is None:
             st = found.path.stat()
             mtime = st.st_mtime
-            if st.st_size > MAX_NOTEBOOK_BYTES:
+            if st.st_size > intake.MAX_NOTEBOOK_BYTES:
                 return found
             data = found.path.read_bytes()
         found.data = data
         if mtime is not None:
             found.mtime = datetime.fromtimestamp(mtime, tz=timezone.utc)
-        if len(data) > MAX_NOTEBOOK_BYTES:
+        if len(data) > intake.MAX_NOTEBOOK_BYTES:
             return found
         nb = nbformat.reads(data.decode("utf-8"), as_version=4)  # the form submit() digested
     except Exception:  # unreadable or not a notebook: the grader reports it
