@@ -217,7 +217,7 @@ def test_a_link_of_a_roster_student_is_listed_as_a_file_not_opened(tmp_path):
     ann = grade.Result("1001", dict(tests.points), dict.fromkeys(tests.points, "✓"))
     ann.lms = {"id": "1001", "name": "Ann", "email": "a@x"}
     link = grade.Result("1010", dict.fromkeys(tests.points, 0.0), dict.fromkeys(tests.points, ""),
-                        status="a link, not graded")  # fmt: skip
+                        status="a link, not graded", refused="a link, not graded")  # fmt: skip
     text, data = reports.summary([ann, link], tests, roster)
     act = text.split("## Statistics")[0]
     assert "Files not opened" in act and "1010 (a link)" in act

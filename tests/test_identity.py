@@ -21,7 +21,7 @@ from course_lib.submit import MANIFEST_KEY, notebook_digest
 
 ROOT = Path(__file__).resolve().parents[1]
 grade = load("grade_identity", ROOT / "tools" / "grade.py")
-from grading import identity, reports  # noqa: E402  (tools/ is on the path once grade is loaded)
+from grading import identity, intake, reports  # noqa: E402  (tools/ is on the path once grade is loaded)
 
 SECRET = b"a course secret for identity tests"
 DEADLINE = datetime(2026, 12, 8, 22, 59, tzinfo=timezone.utc)
@@ -124,18 +124,35 @@ def test_a_canvas_semester_is_identified_and_flagged(tmp_path):
     assert ann.found.manifest["tampered"] and ann.found.lms_late
 
 
+def facts(found: identity.Found, path: Path) -> identity.Found:
+    """What the grader knows of ``path``: read as intake reads it (no link followed)."""
+    found.path = path
+    data = intake.read_regular(path.parent, path)
+    return identity.read_notebook_facts(found, data, os.lstat(path).st_mtime)
+
+
+def test_reading_facts_takes_intakes_bytes_never_the_path(tmp_path):
+    target = notebook(tmp_path / "friend.ipynb", "", "1002")
+    (tmp_path / "mine.ipynb").symlink_to(target)
+    with pytest.raises(intake.Refused):
+        intake.read_regular(tmp_path, tmp_path / "mine.ipynb")
+    found = identity.Found(tmp_path / "mine.ipynb", "mine.ipynb")
+    with pytest.raises(TypeError, match="data must be the notebook's bytes"):
+        identity.read_notebook_facts(found, None)
+    assert found.manifest is None and found.data is None
+
+
 def test_lateness_comes_from_the_lms_and_a_manifest_time_is_only_compared(tmp_path):
     on_time = DEADLINE - timedelta(hours=3)
     # Canvas said LATE; the student edited the manifest time to before the deadline
-    f = identity.read_notebook_facts(identity.parse_name(Path("poeann_LATE_12347_4_hw01-1003.ipynb")))
-    f.path = notebook(tmp_path / "a.ipynb", "", "1003", on_time)
-    f = identity.read_notebook_facts(f)
+    f = identity.parse_name(Path("poeann_LATE_12347_4_hw01-1003.ipynb"))
+    f = facts(f, notebook(tmp_path / "a.ipynb", "", "1003", on_time))
     when, source, flags, _ = identity.time_flags(f, DEADLINE)
     assert when > DEADLINE and source == "Canvas: late" and flags == [identity.TIMES_DISAGREE]
     # no LMS record: the file's time, and a manifest claiming another side of the deadline is flagged
-    g = identity.Found(notebook(tmp_path / "b.ipynb", "", "1003", on_time), "b.ipynb")
-    touch(g.path, DEADLINE + timedelta(hours=5))
-    g = identity.read_notebook_facts(g)
+    path = notebook(tmp_path / "b.ipynb", "", "1003", on_time)
+    touch(path, DEADLINE + timedelta(hours=5))
+    g = facts(identity.Found(Path(), "b.ipynb"), path)
     when, source, flags, notes = identity.time_flags(g, DEADLINE)
     assert when > DEADLINE and source == "file time" and flags == [identity.TIMES_DISAGREE]
     assert "the file's time is used" in notes[0]
@@ -247,10 +264,9 @@ def test_a_file_dated_after_the_deadline_canvas_calls_on_time_is_noted_not_penal
     """Canvas (no LATE mark) decides; the file's real time is kept and said, never the deadline."""
     after = DEADLINE + timedelta(hours=5)
     for student, flagged in ((None, True), ("1001", False)):  # a submit() time backs Canvas up
-        f = identity.read_notebook_facts(identity.parse_name(Path("doejane_12345_4_hw01-1001.ipynb")))
-        f.path = notebook(tmp_path / f"{student}.ipynb", "", student, DEADLINE - timedelta(hours=1))
-        touch(f.path, after)
-        f = identity.read_notebook_facts(f)
+        path = notebook(tmp_path / f"{student}.ipynb", "", student, DEADLINE - timedelta(hours=1))
+        touch(path, after)
+        f = facts(identity.parse_name(Path("doejane_12345_4_hw01-1001.ipynb")), path)
         when, source, flags, notes = identity.time_flags(f, DEADLINE)
         assert when <= DEADLINE and source == "Canvas: on time"
         assert flags == ([identity.FILE_TIME_AFTER] if flagged else [])

@@ -372,7 +372,7 @@ def _refused_result(student: str, entries, tests: HiddenTests, mode: str) -> Res
         status=reason,
         sandbox=mode,
     )
-    r.file = entries[0][0]
+    r.file, r.refused = entries[0][0], reason
     r.run_notes += intake.refusal_note(entries)
     r.run_notes.append("the grader opens only regular files inside the submissions folder")
     return r

@@ -120,19 +120,18 @@ def _submit_names(stem: str) -> list[str]:
     return [m["id"]] if m else []
 
 
-def read_notebook_facts(found: Found, data: bytes | None = None, mtime: float | None = None) -> Found:
-    """The manifest, the file time and the ``VARIANT`` written in the notebook (never raises).
+def read_notebook_facts(found: Found, data: bytes, mtime: float | None = None) -> Found:
+    """The manifest, the file time and the ``VARIANT`` written in the notebook.
 
-    ``data`` and ``mtime`` are the bytes and time the grader's intake read (no link followed);
-    without them the file at ``found.path`` is read (tests and tools on trusted folders).
+    A file that is not a notebook, or a hostile manifest, gives no facts (never an exception).
+    ``data`` and ``mtime`` are the bytes and the time :mod:`intake` read (``read_regular``:
+    no link followed); this function never opens ``found.path`` itself.
     """
+    if not isinstance(data, bytes):
+        raise TypeError(
+            f"data must be the notebook's bytes as intake.read_regular returns them, not {type(data).__name__}"
+        )
     try:
-        if data is None:
-            st = found.path.stat()
-            mtime = st.st_mtime
-            if st.st_size > intake.MAX_NOTEBOOK_BYTES:
-                return found
-            data = found.path.read_bytes()
         found.data = data
         if mtime is not None:
             found.mtime = datetime.fromtimestamp(mtime, tz=timezone.utc)

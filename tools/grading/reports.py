@@ -488,7 +488,7 @@ def summary(
     over the class (roster students only when there is a roster; not-graded rows never).
     ``lms`` is ``(LMS name, its maximum or None, the import column)`` for an import file."""
     listed = list(results)
-    results = [r for r in listed if not r.status.startswith("not graded")]
+    results = [r for r in listed if not r.status.startswith("not graded") and not r.refused]
     if roster is not None:
         results = [r for r in results if r.lms]
     totals = [final_total(r) for r in results]
@@ -517,7 +517,7 @@ def summary(
         flagged[flag] = who
         if who:
             lines.append(f"- **{title}** ({len(who)}): " + ", ".join(who))
-    refused = sorted((r.student, r.status) for r in listed if r.status.endswith(", not graded"))
+    refused = sorted((r.student, r.refused) for r in listed if r.refused)
     if refused:  # links, FIFOs, hard links: never opened (intake.py), never graded
         data["not_opened"] = [s for s, _ in refused]
         lines.append(

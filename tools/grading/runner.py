@@ -115,6 +115,8 @@ class Result:
     #: the fraction of each question's credit earned (0..1); a feedback-only question (0 points)
     #: is right or wrong here although it adds nothing to the total
     fractions: dict[str, float] = field(default_factory=dict)
+    #: why intake refused to open the student's file ("a link, not graded"), "" if it was opened
+    refused: str = ""
 
     def right(self, q: str, points: float) -> bool:
         """Did the answer to ``q`` earn full credit (also for a feedback-only question)?"""
