@@ -51,7 +51,11 @@ bench: install
 #      [DEADLINE=2026-12-08T23:59+01:00] [PENALTY=10%] [EXECUTOR=local|dask] [ONLY=student]
 #      [ASSIGNMENT="Homework 1"]  (the Canvas export's column to fill, with or without its "(id)")
 HW ?= hw01
-OUT ?= grading-output/$(HW)
+# HW=hw3, HW=3, HW=hw03 or HW=hw03_name all name hw03, as `make submit HW=...` reads them
+# (course_lib.submit.find_homework); anything else is passed on as written, for grade.py to refuse
+HW_ID := $(shell n=$$(printf '%s' '$(HW)' | sed -E 's/_.*//; s/^[Hh][Ww]//; s/^0+//'); \
+	case "$$n" in ([1-9]|[1-9][0-9]) printf 'hw%02d' "$$n";; (*) printf '%s' '$(HW)';; esac)
+OUT ?= grading-output/$(HW_ID)
 GRADE_OPTS = $(if $(ROSTER),--roster "$(ROSTER)") $(if $(SECRET),--secret-file "$(SECRET)") \
 	$(if $(FORMAT),--format $(FORMAT)) $(if $(DEADLINE),--deadline "$(DEADLINE)") \
 	$(if $(PENALTY),--late-penalty "$(PENALTY)") $(if $(EXECUTOR),--executor $(EXECUTOR)) \
@@ -59,7 +63,7 @@ GRADE_OPTS = $(if $(ROSTER),--roster "$(ROSTER)") $(if $(SECRET),--secret-file "
 grade: install
 	@bash tools/ensure-sandbox || true
 	@test -n "$(SUBMISSIONS)" || (echo "usage: make grade HW=hw01 SUBMISSIONS=DIR [OUT=DIR] [ROSTER=.. SECRET=.. FORMAT=.. ASSIGNMENT=.. DEADLINE=.. PENALTY=.. EXECUTOR=..]"; exit 2)
-	$(BIN)/python tools/grade.py --tests solutions/hidden_tests/$(firstword $(subst _, ,$(HW))).py \
+	$(BIN)/python tools/grade.py --tests solutions/hidden_tests/$(HW_ID).py \
 	    --submissions "$(SUBMISSIONS)" --out "$(OUT)" --jobs 2 $(GRADE_OPTS)
 
 # make submit HW=hw01 STUDENT=your-id   (runs the homework fresh, writes submissions/hw01-ID.ipynb)

@@ -13,6 +13,8 @@ from pathlib import Path
 import pytest
 from _homework_support import load
 
+from course_lib.submit import find_homework
+
 ROOT = Path(__file__).resolve().parents[1]
 release = load("release_semester", ROOT / "tools" / "release.py")
 
@@ -43,6 +45,17 @@ def test_make_submit_takes_hw3_and_install_says_what_it_does():
     text = _make_n("-W", "pyproject.toml", "submit", "HW=hw3", "STUDENT=s1")
     assert 'course_lib.submit "hw3" --student "s1"' in text
     assert "--quiet" not in text and "installing the course" in text
+
+
+@needs_make
+@pytest.mark.parametrize("hw", ["hw3", "3", "HW3", "hw03", "03", "hw03_bernstein"])
+def test_make_grade_reads_hw_as_make_submit_does(hw):
+    """HW=hw3 names hw03 for `make grade` (its hidden tests, its output folder) as for submit."""
+    text = _make_n("grade", f"HW={hw}", "SUBMISSIONS=subs")
+    line = next(x for x in text.replace("\\\n", " ").splitlines() if "tools/grade.py" in x)
+    assert "--tests solutions/hidden_tests/hw03.py " in line and '--out "grading-output/hw03"' in line
+    if "_" not in hw:  # submit takes a homework id or a notebook, not a notebook's stem
+        assert find_homework(hw, ROOT / "exercises").name.startswith("hw03_")
 
 
 def test_the_scripts_run_as_the_readme_prints_them():
