@@ -1,0 +1,393 @@
+"""Every command the user-facing documents print is run as printed (issue 23).
+
+The documents: ``README.md``, every ``site/*.md`` page, and the student edition's ``README.md``
+as ``make release`` (``tools/release.py``) writes it.  Their commands are *harvested*, never
+listed here, by this convention (also in CONTRIBUTING.md, "Commands in the documents"):
+
+* A fenced block whose info string is ``console`` (or ``shell-session``) holds a terminal
+  session: every line that starts with ``$ `` is a command (the prompt is not part of it);
+  lines without a prompt are the output shown, and are not run.
+* A fenced block whose info string is ``sh``, ``bash``, ``shell`` or ``zsh`` holds commands
+  only: every line that is not blank and does not start with ``#`` is a command.
+* In both, a line ending with ``\\`` continues on the next line (a leading ``> `` there is the
+  shell's continuation prompt and is dropped); a ``# comment`` after a command is part of
+  the line the shell is given (it ignores it).
+* Everything else -- ``text`` blocks, blocks without an info string, inline code -- is not
+  run.  A synopsis with placeholders (``...``, ``[OPTIONS]``, ``tcp://HOST:8786``) or a command
+  for another machine belongs there; in a harvested block it fails this test, naming the
+  document and the line.
+
+How they are run: each document's commands, in the order printed, by ``bash -c`` from the top
+of a fresh scratch copy of the checkout (its working tree: tracked and untracked, not ignored,
+files), or of the student edition unpacked from ``dist/student-edition.zip`` for the edition's
+README.  The copy's ``.venv`` is this test run's environment, and the copy's install stamp is
+up to date, so nothing is installed (``make -q install`` is checked first); ``PYTHONPATH``
+is the copy, as its editable install would make it.  The user's own files are there, named as
+the documents name them (:data:`USER_FILES`): a course roster ``roster.csv``, Canvas's
+gradebook export ``gradebook.csv`` as downloaded, and in ``path/to/submitted/notebooks/`` the
+file the student edition's own hand-in command wrote, named as Canvas's "Download Submissions"
+names it.  A command passes when it exits 0 and prints no traceback.
+
+A few commands cannot be run as printed in a test; each is run in a form that shows it would do
+what it says (one row per command in :data:`EQUIVALENT`; a harvested command matched by no row
+runs as printed):
+
+=====================  ========================================================================
+``make lab``           started as printed; passes when the JupyterLab it starts answers its
+                       ``/lab`` URL and serves ``notebooks/00_welcome.ipynb``, then its process
+                       group is stopped (it serves until stopped, and opens a browser)
+``make present ...``   ``make -n``: the exact recipe (a Voila server, until stopped)
+``make install``       ``make -q install`` must report the install stamp up to date and
+                       ``make -n install`` must show nothing to run (never reinstalls)
+``make test``          ``make -n test``: the exact recipe (the whole suite, this test in it)
+``make site``          ``make -n site``: the exact recipe (minutes; ``tests/test_site.py``
+                       builds the site)
+``make handouts``      ``make -n handouts`` (the site, then Chromium; ``tests/test_site.py``)
+=====================  ========================================================================
+
+The grader's and the hand-in's output never carries the kernel's "running over TCP" start-up
+warning (the grader's kernels use IPC and a silenced stderr; ``submit()`` filters the warning).
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import time
+import urllib.request
+import zipfile
+from dataclasses import dataclass
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+VENV = Path(sys.prefix)
+
+pytestmark = [
+    pytest.mark.skipif(shutil.which("make") is None, reason="needs make"),
+    pytest.mark.skipif(
+        not (VENV / ".installed").is_file(),
+        reason="needs the course's .venv with its install stamp (make install)",
+    ),
+]
+
+
+def user_documents() -> list[Path]:
+    """The documents a user reads for commands: the README and the website's pages."""
+    return [ROOT / "README.md", *sorted((ROOT / "site").glob("*.md"))]
+
+
+# ----------------------------------------------------------------------------- harvesting
+
+PROMPT_BLOCKS = ("console", "shell-session")
+SCRIPT_BLOCKS = ("sh", "bash", "shell", "zsh")
+_FENCE = re.compile(r"^(?P<indent> {0,3})(?P<fence>`{3,}|~{3,})\s*(?P<info>[^`\s]*)")
+
+
+@dataclass(frozen=True)
+class Command:
+    doc: str  # the document, relative to its root
+    line: int  # the line the command starts on
+    text: str  # exactly as printed (without a "$ " prompt)
+
+    def __str__(self) -> str:
+        return f"{self.doc}:{self.line}: {self.text}"
+
+
+def harvest(text: str, doc: str) -> list[Command]:
+    """The commands of a Markdown text, by the convention of the module docstring."""
+    out: list[Command] = []
+    lines = text.splitlines()
+    i = 0
+    while i < len(lines):
+        m = _FENCE.match(lines[i])
+        if not m:
+            i += 1
+            continue
+        fence, info = m["fence"], m["info"].lower()
+        body, j = [], i + 1
+        while j < len(lines) and not lines[j].strip().startswith(fence):
+            body.append((j + 1, lines[j]))
+            j += 1
+        if info in PROMPT_BLOCKS or info in SCRIPT_BLOCKS:
+            out += _commands(body, doc, prompt=info in PROMPT_BLOCKS)
+        i = j + 1
+    return out
+
+
+def _commands(body: list[tuple[int, str]], doc: str, prompt: bool) -> list[Command]:
+    out, k = [], 0
+    while k < len(body):
+        number, line = body[k]
+        stripped = line.strip()
+        if prompt:
+            start = stripped.startswith("$ ")
+            line = stripped[2:] if start else line
+        else:
+            start = bool(stripped) and not stripped.startswith("#")
+            line = stripped
+        k += 1
+        if not start:
+            continue
+        parts = [line]
+        while parts[-1].endswith("\\") and k < len(body):
+            more = body[k][1]
+            more = more.lstrip()[2:] if more.lstrip().startswith("> ") else more
+            parts.append(more)
+            k += 1
+        out.append(Command(doc, number, "\n".join(parts)))
+    return out
+
+
+#: what a placeholder looks like: an ellipsis, an optional part in brackets, a HOST
+PLACEHOLDER = re.compile(r"\.\.\.|…|(?:^|\s)\[[^\]]*\]|\bHOST\b|<[a-z-]+>")
+
+
+def test_the_convention_is_what_the_harvester_reads():
+    doc = "\n".join([
+        "Intro `make inline` is not run.",
+        "```console",
+        "$ make lab   # a comment stays",
+        "output line, not run",
+        "$ tools/grade.py --tests t.py \\",
+        ">     --out o",
+        "```",
+        "```sh",
+        "# a comment line",
+        "make test",
+        "tools/variant.py codes hw01 \\",
+        "    --roster roster.csv",
+        "```",
+        "```text",
+        "make grade ... [ROSTER=roster.csv]",
+        "```",
+        "```",
+        "$ no info string: not run",
+        "```",
+    ])  # fmt: skip
+    got = [(c.line, c.text) for c in harvest(doc, "d.md")]
+    assert got == [
+        (3, "make lab   # a comment stays"),
+        (5, "tools/grade.py --tests t.py \\\n    --out o"),
+        (10, "make test"),
+        (11, "tools/variant.py codes hw01 \\\n    --roster roster.csv"),
+    ]
+    assert PLACEHOLDER.search("make grade ... [ROSTER=x]") and PLACEHOLDER.search("tcp://HOST:8786")
+    assert not PLACEHOLDER.search('make grade HW=hw01 ASSIGNMENT="Homework 1" OUT=grades/hw01')
+
+
+# ----------------------------------------------------------------------------- the user's files
+
+CANVAS_USER = "12345"
+#: the user's own files, named as the documents name them (relative to the checkout)
+USER_FILES = {
+    # the course's roster (README: "id,name,email"): the student edition's hand-in names the
+    # student "your-id", so that is a roster id here
+    "roster.csv": "id,name,email\nyour-id,Ada Lovelace,ada@example.org\n1001,Emmy Noether,emmy@example.org\n",
+    # Canvas's gradebook export as downloaded: its header, the "Points Possible" row, a column
+    # per assignment named "<title> (<assignment id>)"
+    "gradebook.csv": (
+        "Student,ID,SIS User ID,SIS Login ID,Section,Homework 1 (4711),Current Score\n"
+        "    Points Possible,,,,,11.00,(read only)\n"
+        f'"Lovelace, Ada",{CANVAS_USER},your-id,alovelace,Section A,,\n'
+        '"Noether, Emmy",12346,1001,enoether,Section A,,\n'
+    ),
+}
+SUBMISSIONS = "path/to/submitted/notebooks"
+
+
+# ----------------------------------------------------------------------------- running
+
+KERNEL_TCP_WARNING = "Kernel is running over TCP"
+
+
+@dataclass
+class Ran:
+    command: Command
+    how: str
+    output: str
+
+
+def _env(root: Path) -> dict[str, str]:
+    env = {k: v for k, v in os.environ.items() if not k.startswith("MAKE") and k != "MFLAGS"}
+    env["PYTHONPATH"] = str(root)  # the copy's course_lib, as its editable install would give
+    env.pop("VIRTUAL_ENV", None)
+    return env
+
+
+def scratch_checkout(dest: Path, files: list[Path], base: Path) -> Path:
+    """``files`` (under ``base``) copied to ``dest``, with this run's .venv, installed."""
+    for f in files:
+        target = dest / f.relative_to(base)
+        target.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copy2(f, target)
+    (dest / ".venv").symlink_to(VENV, target_is_directory=True)
+    stamp = (VENV / ".installed").stat().st_mtime
+    for name in ("pyproject.toml", "constraints.txt"):  # installed: older than the stamp
+        if (dest / name).exists():
+            os.utime(dest / name, (stamp - 60, stamp - 60))
+    check = subprocess.run(["make", "-q", "install"], cwd=dest, env=_env(dest), capture_output=True)
+    if check.returncode != 0:  # never let a test reinstall into the environment it runs in
+        pytest.fail(f"{dest}: `make -q install` says the install step would run; not running anything")
+    return dest
+
+
+def checkout_files() -> list[Path]:
+    out = subprocess.run(
+        ["git", "ls-files", "--cached", "--others", "--exclude-standard", "-z"],
+        cwd=ROOT, capture_output=True, check=True,
+    ).stdout.decode()  # fmt: skip
+    return [ROOT / p for p in out.split("\0") if p and (ROOT / p).is_file()]
+
+
+def _make_n(cmd: Command, root: Path, target: str) -> tuple[str, str]:
+    shown = subprocess.run(["bash", "-c", cmd.text.replace("make ", "make -n ", 1)], cwd=root,
+                           env=_env(root), capture_output=True, text=True, timeout=60)  # fmt: skip
+    out = shown.stdout + shown.stderr
+    assert shown.returncode == 0, f"{cmd}\n{out}"
+    assert "pip install" not in out and "-m venv" not in out, f"{cmd}: would install\n{out}"
+    return f"make -n {target}", out
+
+
+def _serve_lab(cmd: Command, root: Path) -> tuple[str, str]:
+    """``make lab`` as printed, until its server answers; then its process group is stopped."""
+    log = root / ".printed-commands-lab.log"
+    with open(log, "wb") as fh:
+        proc = subprocess.Popen(["bash", "-c", cmd.text], cwd=root, env=_env(root), stdout=fh,
+                                stderr=subprocess.STDOUT, start_new_session=True)  # fmt: skip
+    try:
+        url, deadline = None, time.monotonic() + 90
+        while url is None and time.monotonic() < deadline and proc.poll() is None:
+            time.sleep(0.5)
+            m = re.search(r"http://(?:127\.0\.0\.1|localhost):\d+/lab\?token=\w+", log.read_text(errors="replace"))
+            url = m[0] if m else None
+        text = log.read_text(errors="replace")
+        assert url is not None, f"{cmd}: JupyterLab did not start\n{text[-3000:]}"
+        with urllib.request.urlopen(url, timeout=30) as page:
+            assert page.status == 200
+        base, token = url.split("/lab?token=")
+        api = f"{base}/api/contents/notebooks/00_welcome.ipynb?content=0&token={token}"
+        with urllib.request.urlopen(api, timeout=30) as page:
+            assert page.status == 200 and b'"type": "notebook"' in page.read()
+        recipe = text.split("\n[")[0]  # what make echoed before the server's first log line
+        assert "jupyter lab" in recipe and "notebooks/00_welcome.ipynb" in recipe, text[:500]
+    finally:
+        try:
+            os.killpg(proc.pid, signal.SIGTERM)
+            proc.wait(timeout=20)
+        except (ProcessLookupError, subprocess.TimeoutExpired):
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.wait()
+    return "started; /lab and notebooks/00_welcome.ipynb served; stopped", text
+
+
+#: commands not run as printed, and how they are run instead (the table of the docstring)
+EQUIVALENT = [
+    (re.compile(r"^make\s+lab\b"), lambda c, r: _serve_lab(c, r)),
+    (re.compile(r"^make\s+present\b"), lambda c, r: _make_n(c, r, "present")),
+    (re.compile(r"^make\s+install\b"), lambda c, r: _make_n(c, r, "install")),
+    (re.compile(r"^make\s+test\b"), lambda c, r: _make_n(c, r, "test")),
+    (re.compile(r"^make\s+site\b"), lambda c, r: _make_n(c, r, "site")),
+    (re.compile(r"^make\s+handouts\b"), lambda c, r: _make_n(c, r, "handouts")),
+]
+
+
+def run_printed(commands: list[Command], root: Path) -> list[Ran]:
+    """Run ``commands`` in order in ``root``; fail on the first that does not work as printed."""
+    ran = []
+    for cmd in commands:
+        assert not PLACEHOLDER.search(cmd.text), (
+            f"{cmd}\nhas a placeholder: a synopsis belongs in a ```text block, a command in a "
+            "```console/```sh block must run as printed (see tests/test_printed_commands.py)"
+        )
+        rule = next((run for pattern, run in EQUIVALENT if pattern.search(cmd.text)), None)
+        if rule is not None:
+            how, output = rule(cmd, root)
+        else:
+            done = subprocess.run(["bash", "-c", cmd.text], cwd=root, env=_env(root),
+                                  capture_output=True, text=True, timeout=600)  # fmt: skip
+            how, output = "as printed", done.stdout + done.stderr
+            assert done.returncode == 0, f"{cmd}\nexit {done.returncode}:\n{output[-4000:]}"
+        assert "Traceback (most recent call last)" not in output, f"{cmd}\n{output[-4000:]}"
+        assert KERNEL_TCP_WARNING not in output, f"{cmd}\n{output[-4000:]}"
+        ran.append(Ran(cmd, how, output))
+    return ran
+
+
+# ----------------------------------------------------------------------------- the tests
+
+
+@pytest.fixture(scope="module")
+def edition(tmp_path_factory):
+    """The student edition as a student gets it (the zip ``make release`` writes), unpacked."""
+    work = tmp_path_factory.mktemp("edition")
+    repo = scratch_checkout(work / "course", checkout_files(), ROOT)
+    done = subprocess.run(["make", "release"], cwd=repo, env=_env(repo), capture_output=True,
+                          text=True, timeout=300)  # fmt: skip
+    assert done.returncode == 0, done.stdout + done.stderr
+    with zipfile.ZipFile(repo / "dist" / "student-edition.zip") as zf:
+        zf.extractall(work / "student")
+    unpacked = work / "student" / "student-edition"
+    files = [p for p in unpacked.rglob("*") if p.is_file()]
+    return scratch_checkout(work / "student-copy", files, unpacked)
+
+
+@pytest.fixture(scope="module")
+def edition_run(edition):
+    commands = harvest((edition / "README.md").read_text(encoding="utf-8"), "student edition README.md")
+    return commands, run_printed(commands, edition)
+
+
+def test_the_student_editions_commands_work_as_printed(edition, edition_run):
+    commands, ran = edition_run
+    texts = [c.text for c in commands]
+    # a student is told how to open the course and how to hand in
+    assert any(t.startswith("make lab") for t in texts) and any("make submit" in t for t in texts), texts
+    handed_in = sorted((edition / "submissions").glob("hw*.ipynb"))
+    assert handed_in, "the edition's hand-in command wrote no submission"
+    assert all(r.how for r in ran)
+
+
+@pytest.fixture(scope="module")
+def repository_runs(edition, edition_run, tmp_path_factory):
+    """Each document's commands in a fresh scratch checkout with the user's files."""
+    handed_in = sorted((edition / "submissions").glob("hw*.ipynb"))[0]
+    files = checkout_files()
+    runs = {}
+    for doc in user_documents():
+        rel = doc.relative_to(ROOT).as_posix()
+        commands = harvest(doc.read_text(encoding="utf-8"), rel)
+        root = scratch_checkout(tmp_path_factory.mktemp(doc.stem.lower()), files, ROOT)
+        for name, text in USER_FILES.items():
+            (root / name).write_text(text, encoding="utf-8")
+        folder = root / SUBMISSIONS
+        folder.mkdir(parents=True)
+        # as Canvas's "Download Submissions" names the file: <name>_<user id>_<submission id>_<file>
+        shutil.copy2(handed_in, folder / f"lovelaceada_{CANVAS_USER}_67890_{handed_in.name}")
+        runs[rel] = (root, run_printed(commands, root))
+    return runs
+
+
+def test_the_repositorys_documents_commands_work_as_printed(repository_runs):
+    ran = [r for _, rs in repository_runs.values() for r in rs]
+    assert ran, "no harvested command in README.md or site/*.md"
+    texts = [r.command.text for r in ran]
+    for needed in ("make lab", "make test"):
+        assert any(t.startswith(needed) for t in texts), f"no `{needed}` printed to run"
+
+
+def test_grading_as_printed_writes_its_files_without_the_kernels_tcp_warning(repository_runs):
+    graded = [(root, r) for root, rs in repository_runs.values() for r in rs
+              if re.search(r"\bmake\s+grade\b|tools/grade\.py", r.command.text)]  # fmt: skip
+    assert graded, "no grading command is printed to run (make grade or tools/grade.py)"
+    for root, r in graded:
+        assert "wrote " in r.output and "scores.csv" in r.output, f"{r.command}\n{r.output[-2000:]}"
+        assert "your-id" in r.output, r.output[-2000:]  # the handed-in notebook was graded
+        for f in (root / "grades").rglob("*"):
+            if f.is_file() and f.suffix in (".md", ".csv", ".json"):
+                assert KERNEL_TCP_WARNING not in f.read_text(encoding="utf-8"), f
