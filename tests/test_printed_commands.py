@@ -233,7 +233,9 @@ def scratch_checkout(dest: Path, files: list[Path], base: Path) -> Path:
             os.utime(dest / name, (stamp - 60, stamp - 60))
     check = subprocess.run(["make", "-q", "install"], cwd=dest, env=_env(dest), capture_output=True)
     if check.returncode != 0:  # never let a test reinstall into the environment it runs in
-        pytest.fail(f"{dest}: `make -q install` says the install step would run; not running anything")
+        pytest.fail(
+            f"{dest}: `make -q install` says the install step would run; not running anything"
+        )
     return dest
 
 
@@ -264,7 +266,10 @@ def _serve_lab(cmd: Command, root: Path) -> tuple[str, str]:
         url, deadline = None, time.monotonic() + 90
         while url is None and time.monotonic() < deadline and proc.poll() is None:
             time.sleep(0.5)
-            m = re.search(r"http://(?:127\.0\.0\.1|localhost):\d+/lab\?token=\w+", log.read_text(errors="replace"))
+            m = re.search(
+                r"http://(?:127\.0\.0\.1|localhost):\d+/lab\?token=\w+",
+                log.read_text(errors="replace"),
+            )
             url = m[0] if m else None
         text = log.read_text(errors="replace")
         assert url is not None, f"{cmd}: JupyterLab did not start\n{text[-3000:]}"
@@ -339,7 +344,9 @@ def edition(tmp_path_factory):
 
 @pytest.fixture(scope="module")
 def edition_run(edition):
-    commands = harvest((edition / "README.md").read_text(encoding="utf-8"), "student edition README.md")
+    commands = harvest(
+        (edition / "README.md").read_text(encoding="utf-8"), "student edition README.md"
+    )
     return commands, run_printed(commands, edition)
 
 
@@ -347,7 +354,9 @@ def test_the_student_editions_commands_work_as_printed(edition, edition_run):
     commands, ran = edition_run
     texts = [c.text for c in commands]
     # a student is told how to open the course and how to hand in
-    assert any(t.startswith("make lab") for t in texts) and any("make submit" in t for t in texts), texts
+    assert any(t.startswith("make lab") for t in texts) and any(
+        "make submit" in t for t in texts
+    ), texts
     handed_in = sorted((edition / "submissions").glob("hw*.ipynb"))
     assert handed_in, "the edition's hand-in command wrote no submission"
     assert all(r.how for r in ran)
