@@ -271,3 +271,65 @@ def test_a_file_dated_after_the_deadline_canvas_calls_on_time_is_noted_not_penal
         assert when <= DEADLINE and source == "Canvas: on time"
         assert flags == ([identity.FILE_TIME_AFTER] if flagged else [])
         assert after.isoformat(timespec="seconds") in notes[0] and "Canvas's verdict is used" in notes[0]
+
+
+# Moodle's grading worksheet as "Download grading worksheet" writes it: the submission time in
+# "Last modified (submission)" by userdate() (English: "Tuesday, 8 December 2026, 6:00 PM",
+# quoted as it holds commas; "-" without a submission), no time zone
+MOODLE_WORKSHEET_TIMES = (
+    "Identifier,Full name,Email address,Status,Grade,Maximum Grade,Grade can be changed,"
+    "Last modified (submission),Last modified (grade),Feedback comments\n"
+    'Participant 4711,Jane Doe,jane@example.org,Submitted for grading,,11.00,Yes,'
+    '"Tuesday, 8 December 2026, 6:00 PM",-,\n'
+    "Participant 4712,Rick Roe,rick@example.org,Submitted for grading - 10 hours 16 mins late,"
+    ',11.00,Yes,"Wednesday, 9 December 2026, 10:15 AM",-,\n'
+    "Participant 4713,Ann Poe,ann@example.org,No submission,,11.00,Yes,-,-,\n"
+)
+
+
+def test_moodles_recorded_submission_time_decides_lateness(tmp_path):
+    """Moodle's worksheet records when each submission was made: that time is used, not the
+    file's (an unpacked archive's file time is the unpacking), and a manifest is only compared."""
+    (tmp_path / "worksheet.csv").write_text(MOODLE_WORKSHEET_TIMES, encoding="utf-8")
+    roster = reports.read_roster(tmp_path / "worksheet.csv")
+    deadline = datetime(2026, 12, 8, 23, 59, tzinfo=timezone(timedelta(hours=1)))
+    subs = tmp_path / "subs"
+    # "Download all submissions": a folder per participant, or flattened file names
+    jane = notebook(subs / "Jane Doe_4711_assignsubmission_file_" / "hw01.ipynb", "", "jane",
+                    deadline - timedelta(hours=6))  # fmt: skip
+    rick = notebook(subs / "Rick Roe_4712_assignsubmission_file_hw01-rick.ipynb", "", "rick",
+                    deadline - timedelta(hours=1))  # his manifest claims on time  # fmt: skip
+    touch(jane, deadline + timedelta(days=3))  # unpacked days later
+    touch(rick, deadline - timedelta(hours=1))  # a file time that looks on time
+    items = {i.who.entry.id: i for i in grade.plan(subs, roster)}
+    assert set(items) == {"jane@example.org", "rick@example.org"}
+    late = reports.LatePolicy(deadline, 0.1)
+    outcome = {}
+    for rid, item in items.items():
+        assert identity.read_lms_time(item.found, item.who.entry, deadline) == []
+        when, source, flags, _ = identity.time_flags(item.found, deadline)
+        outcome[rid] = (when, source, flags, late.apply(when))
+    when, source, flags, (days, _) = outcome["jane@example.org"]
+    assert when == datetime(2026, 12, 8, 18, 0, tzinfo=deadline.tzinfo) and source.startswith("Moodle")
+    assert days == 0 and flags == []
+    when, source, flags, (days, penalty) = outcome["rick@example.org"]
+    assert when == datetime(2026, 12, 9, 10, 15, tzinfo=deadline.tzinfo) and days == 1
+    assert penalty == pytest.approx(0.1) and flags == [identity.TIMES_DISAGREE]
+
+
+def test_a_moodle_time_that_cannot_be_read_falls_back_to_the_files_time_and_says_so(tmp_path):
+    (tmp_path / "worksheet.csv").write_text(
+        MOODLE_WORKSHEET_TIMES.replace("Tuesday, 8 December 2026, 6:00 PM", "martes, 8 de diciembre"),
+        encoding="utf-8",
+    )
+    roster = reports.read_roster(tmp_path / "worksheet.csv")
+    path = notebook(tmp_path / "subs" / "Jane Doe_4711_assignsubmission_file_hw01.ipynb")
+    touch(path, DEADLINE - timedelta(hours=2))
+    (item,) = grade.plan(tmp_path / "subs", roster)
+    notes = identity.read_lms_time(item.found, item.who.entry, DEADLINE)
+    assert item.found.lms_time is None and "could not be read" in notes[0]
+    when, source, _, _ = identity.time_flags(item.found, DEADLINE)
+    assert source == "file time" and when == DEADLINE - timedelta(hours=2)
+    # a plain file (not from Moodle's archive) never takes a worksheet's time
+    f = identity.Found(path, "jane.ipynb")
+    assert identity.read_lms_time(f, item.who.entry, DEADLINE) == [] and f.lms_time is None

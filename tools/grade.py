@@ -390,6 +390,7 @@ def _finish_result(r: Result, item: Item, args, late) -> Result:
     if found.manifest is not None and found.manifest["tampered"]:
         flags.insert(0, identity.EDITED)
     deadline = late.deadline if late is not None else None
+    notes += identity.read_lms_time(found, who.entry, deadline)
     when, source, tflags, tnotes = identity.time_flags(found, deadline)
     if args.time_source == "file":
         when, source = found.mtime, "file time"

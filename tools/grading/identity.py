@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
-from datetime import datetime, timedelta, timezone
+from datetime import datetime, timedelta, timezone, tzinfo
 from pathlib import Path, PurePosixPath
 
 import nbformat
@@ -51,6 +51,14 @@ FLAGS = (NOT_IN_ROSTER, EDITED, ID_DIFFERS, TIMES_DISAGREE, LATE, SEVERAL, WRONG
 #: a manifest time more than this after the file's own time cannot be true
 CLOCK_SLACK_SECONDS = 600
 
+# Canvas's "Download Submissions" names each file <sortable name, lower case, no punctuation>_
+# [LATE_]<user id>_<submission id>_<the file's name>, e.g. smithbob_340934_208490284_BobsWork.zip
+# (mikewesthad/canvas-unzipper README), name_LATE_canvasid_number_assignment.zip for a late one
+# (HCI-Data-Analysis/HCI-data-analysis scripts/convert_zip_file/convert_zip_file_id.md); Moodle's
+# "Download all submissions" <Full Name>_<participant id>_assignsubmission_file_<file's name>
+# (gondree/canvas-offline-grading moodle_submissions.py: name, id, then the file after two
+# fields), or the folder of that name with "Download submissions in folders" (Moodle's
+# mod/assign/lang/en/assign.php, 'downloadasfolders_help').
 _CANVAS = re.compile(
     r"^(?P<name>[a-z0-9-]+?)_(?:(?P<late>LATE)_)?(?P<uid>\d+)_(?P<sid>\d+)_(?P<file>.+)$"
 )
@@ -70,6 +78,7 @@ class Found:
     lms_id: str = ""  # Canvas user id / Moodle participant id
     lms_name: str = ""  # the LMS's name of the student (Canvas: "doejane"; Moodle: full name)
     lms_late: bool | None = None  # the LMS's own late mark (Canvas), None if it has none
+    lms_time: datetime | None = None  # the LMS's record of the submission time (Moodle's worksheet)
     names: list[str] = field(default_factory=list)  # ids the file/folder name gives
     manifest: dict | None = None  # course_lib.submit.manifest_of, or None
     mtime: datetime | None = None
@@ -278,8 +287,53 @@ def identify(found: Found, index: RosterIndex | None) -> Identity:
     return ident
 
 
+#: Moodle's grading worksheet ("Download grading worksheet", assignfeedback_offline: the grading
+#: table downloaded) records each submission's time in this column, written by Moodle's
+#: ``userdate()`` in the downloading user's time zone and language -- in English
+#: "Tuesday, 8 December 2026, 11:59 PM" -- and "-" without a submission (mod/assign/lang/en/
+#: assign.php: ``$string['lastmodifiedsubmission'] = 'Last modified (submission)'``;
+#: gradingtable.php ``col_timesubmitted``: ``userdate($row->timesubmitted)``).  The file's own
+#: time in a "Download all submissions" archive is not Moodle's record of the submission.
+MOODLE_TIME_COLUMN = "Last modified (submission)"
+_MOODLE_TIME_FORMATS = ("%A, %d %B %Y, %I:%M %p", "%A, %d %B %Y, %H:%M", "%d %B %Y, %I:%M %p")
+
+
+def moodle_time(row: dict, tz: tzinfo) -> datetime | None:
+    """Moodle's record of when the worksheet row's submission was made (``tz``: the worksheet's
+    time zone, which Moodle does not write), or None (no submission, another language)."""
+    text = " ".join(str(row.get(MOODLE_TIME_COLUMN) or "").split())
+    for fmt in _MOODLE_TIME_FORMATS:
+        try:
+            return datetime.strptime(text, fmt).replace(tzinfo=tz)
+        except ValueError:
+            continue
+    return None
+
+
+def read_lms_time(found: Found, entry, deadline: datetime | None) -> list[str]:
+    """Set ``found.lms_time`` from the LMS's record of the roster ``entry``, if it has one.
+
+    Moodle: a notebook from its "Download all submissions" archive whose participant's row of
+    the roster (Moodle's grading worksheet) records the submission time.  The worksheet writes
+    local times without a zone: they are read in the deadline's zone (UTC without a deadline).
+    Returns notes for the feedback (a time that could not be read).
+    """
+    if found.lms != "moodle" or entry is None or MOODLE_TIME_COLUMN not in getattr(entry, "row", {}):
+        return []
+    zone = deadline.tzinfo if deadline is not None and deadline.tzinfo else timezone.utc
+    found.lms_time = moodle_time(entry.row, zone)
+    text = entry.row[MOODLE_TIME_COLUMN]
+    if found.lms_time is None and text not in ("", "-"):
+        return [f"Moodle's submission time {text!r} could not be read (the worksheet is read in "
+                "English): the file's time is used"]  # fmt: skip
+    return []
+
+
 def time_flags(found: Found, deadline: datetime | None) -> tuple[datetime | None, str, list[str], list[str]]:
     """``(submission time, its source, flags, notes)``: the LMS's record, else the file's time.
+
+    The LMS's record: Canvas's late mark in its download's file names (``_LATE_``), Moodle's
+    submission time from its grading worksheet (:func:`moodle_time`, set as ``lms_time``).
 
     The manifest's time is written on the student's machine: it is never used alone, only
     compared with the trusted time, and a disagreement is flagged.
@@ -287,6 +341,19 @@ def time_flags(found: Found, deadline: datetime | None) -> tuple[datetime | None
     flags, notes = [], []
     when, source = found.mtime, "file time"
     m_time = found.manifest_time
+    if found.lms_time is not None:  # Moodle's record: used, the manifest's time only compared
+        when, source = found.lms_time, "Moodle: submission time"
+        ahead = m_time is not None and (m_time - found.lms_time).total_seconds() > CLOCK_SLACK_SECONDS
+        sides = (m_time is not None and deadline is not None
+                 and (m_time > deadline) != (found.lms_time > deadline))  # fmt: skip
+        if ahead or sides:
+            flags.append(TIMES_DISAGREE)
+            notes.append(
+                f"the submit() manifest says {m_time.isoformat(timespec='seconds')}, Moodle "
+                f"recorded the submission at {found.lms_time.isoformat(timespec='seconds')}: "
+                "Moodle's time is used"
+            )
+        return when, source, flags, notes
     if found.lms_late is not None and deadline is not None:
         source = "Canvas: late" if found.lms_late else "Canvas: on time"
         if found.lms_late:  # late by the file's time, and at least one started day
