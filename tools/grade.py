@@ -20,7 +20,10 @@ folders), else the file or folder name (``alice.ipynb``, ``alice/hw01.ipynb``, s
 roster and a course secret, a submission that matches no roster entry is not graded (it would
 be graded on the wrong data): it is listed in ``summary.md`` for the instructor to resolve.
 When one student has several notebooks, the one with the newest valid manifest time (else file
-time) is graded and the status says ``several notebooks``.  Flags (edited after submit, manifest
+time) is graded and the status says ``several notebooks``.  The submission time is the LMS's
+record where it has one -- Canvas's ``LATE`` mark in its file names; with Moodle's grading
+worksheet as the roster, its "Last modified (submission)" for a notebook from Moodle's
+download -- else the file's time; the manifest's time is only compared with it.  Flags (edited after submit, manifest
 time or id disagreeing, late, wrong or shared variant code) go into the status column, the
 feedback and the summary.
 Only regular files inside ``--submissions`` are opened, never through a link: a notebook or
@@ -478,8 +481,9 @@ def main(argv: list[str] | None = None) -> int:
         "--time-source",
         choices=["lms", "file"],
         default="lms",
-        help="submission time: the LMS's record where it has one (Canvas's LATE mark), else "
-        "the file time; or always the file time.  The manifest's time is only compared",
+        help="submission time: the LMS's record where it has one (Canvas's LATE mark; Moodle's "
+        "worksheet time, with a Moodle grading worksheet as --roster), else the file time; or "
+        "always the file time.  The manifest's time is only compared",
     )
     p.add_argument("--only", metavar="STUDENT", help="regrade one student, merge into --out")
     p.add_argument(
