@@ -193,6 +193,11 @@ def test_hostile_names_and_links_get_a_row_each_and_their_own_feedback(subs, tmp
     assert "a link, not graded" in thief
     results = json.loads((out / "results.json").read_text(encoding="utf-8"))
     assert len(results["results"]) == len(expected)
+    # the rows intake refused say so in their own field; the summary lists them from it
+    refused = {r["student"]: r["refused"] for r in results["results"] if r["refused"]}
+    assert set(refused) == links and refused["thief"] == "a link, not graded"
+    act = (out / "summary.md").read_text(encoding="utf-8").split("## Statistics")[0]
+    assert "Files not opened" in act and all(name in act for name in links)
     mixed = next(p for p in feedback if p.name == "mixed.md").read_text(encoding="utf-8")
     assert "mixed/newer.ipynb: a link, not graded" in mixed
 
