@@ -240,6 +240,9 @@ def scratch_checkout(dest: Path, files: list[Path], base: Path) -> Path:
 
 
 def checkout_files() -> list[Path]:
+    """The checkout's working tree: tracked and untracked files, not the ignored ones."""
+    if shutil.which("git") is None or not (ROOT / ".git").exists():
+        pytest.skip("needs a git checkout (the scratch copy is its working tree)")
     out = subprocess.run(
         ["git", "ls-files", "--cached", "--others", "--exclude-standard", "-z"],
         cwd=ROOT, capture_output=True, check=True,
