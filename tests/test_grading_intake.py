@@ -141,7 +141,7 @@ def test_file_stems_distinct_ignoring_case_and_unclaimable():
     [("=HYPERLINK(\"http://x\")", "'=HYPERLINK(\"http://x\")"), ("+1+1", "'+1+1"),
      ("-2+3", "'-2+3"), ("@SUM(A1)", "'@SUM(A1)"), ("\tx", "'\tx"), ("\rx", "'\rx"),
      ("-0.5", "-0.5"), ("+3e2", "'+3e2"), ("+1001", "'+1001"), (-1.5, -1.5), (7, 7),
-     ("alice", "alice"),
+     ("alice", "alice"), ("-", "-"), ("--", "'--"),
      ("\ud800", "\\ud800")],
 )  # fmt: skip
 def test_csv_cells_are_never_formulas(value, cell):

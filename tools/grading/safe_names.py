@@ -156,6 +156,8 @@ def csv_cell(value: Any) -> Any:
     if isinstance(value, int | float):
         return value
     text = printable(str(value))
+    if text == "-":  # Moodle's own "no date": a lone minus is no formula, and must read back as-is
+        return text
     if text.startswith(_FORMULA_START) and (text.startswith("+") or not _NUMBER.fullmatch(text)):
         return "'" + text
     return text
