@@ -77,7 +77,9 @@ def test_the_readme_fits_on_a_few_screens():
 
 
 @pytest.mark.parametrize(
-    "path", [ROOT / "README.md", *GUIDE_FILES], ids=lambda p: str(p.relative_to(ROOT))
+    "path",
+    [ROOT / "README.md", ROOT / "CONTRIBUTING.md", *GUIDE_FILES],
+    ids=lambda p: str(p.relative_to(ROOT)),
 )
 def test_every_relative_link_resolves(path):
     assert broken_links(path) == []
