@@ -119,6 +119,19 @@ def test_guides_link_notebooks_to_their_pages_and_other_files_by_name():
     assert "`zz`" in page, "a cell id the notebook does not have stays text"
 
 
+def test_readme_links_on_the_site_point_at_pages_or_keep_their_text():
+    docs = {"01_a": "lectures/01_a"}
+    text = build_site.link_notebooks(
+        "[`01_a`](notebooks/01_a.ipynb) [grading](site/grading.md#limits) "
+        "[contributing](CONTRIBUTING.md) [folder](site/) [web](https://x.org)",
+        docs,
+    )
+    assert text == (
+        "{doc}`01_a </lectures/01_a>` [grading](grading.md#limits) contributing folder "
+        "[web](https://x.org)"
+    )
+
+
 # ------------------------------------------------------------------- the figure table
 def _cell_ids(nb: str) -> set[str]:
     path = next((ROOT / "notebooks").glob(f"{nb}_*.ipynb"))

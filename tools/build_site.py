@@ -291,8 +291,10 @@ def _doc_for(docs: dict[str, str], prefix: str) -> str | None:
 
 
 def link_notebooks(text: str, docs: dict[str, str]) -> str:
-    """README links ``[`stem`](notebooks/stem.ipynb)`` as links to the pages; any other
-    relative link keeps its text only (the site has no such page)."""
+    """README links ``[`stem`](notebooks/stem.ipynb)`` as links to the pages and links to a
+    guide (``site/NAME.md``) as links to its page (from a page at the top of the site); any
+    other relative link keeps its text only (the site has no such page)."""
+    guides = "|".join(re.escape(g) for _, names in GUIDES for g in names)
 
     def repl(m):
         stem = Path(m.group(2)).stem
@@ -300,7 +302,8 @@ def link_notebooks(text: str, docs: dict[str, str]) -> str:
         return f"{{doc}}`{m.group(1)} </{d}>`" if d else m.group(1)
 
     text = re.sub(r"\[`([^`\]]+)`\]\(((?:notebooks|exercises)/[^)]+\.ipynb)\)", repl, text)
-    return re.sub(r"\[([^\]]+)\]\((?!https?:|#)[^)]+\)", r"\1", text)
+    text = re.sub(rf"\]\(site/((?:{guides})\.md(?:#[^)]*)?)\)", r"](\1)", text)
+    return re.sub(rf"\[([^\]]+)\]\((?!https?:|#|(?:{guides})\.md)[^)]+\)", r"\1", text)
 
 
 def link_figure_row(line: str, docs: dict[str, str], cell_ids: dict[str, set[str]]) -> str:
@@ -389,7 +392,7 @@ def guide_page(name: str, text: str, docs: dict[str, str], cell_ids: dict[str, s
 def index_page(items: list[tuple[Path, str]]) -> str:
     readme = (ROOT / "README.md").read_text()
     intro = readme.split("\n## ", 1)[0].split("\n", 1)[1].strip()
-    intro = re.sub(r"\[([^\]]+)\]\((?!https?:)[^)]+\)", r"\1", intro)
+    intro = link_notebooks(intro, {})
     intro = re.sub(r" \(in `[^`]*`\)", "", intro)
     lectures = "\n".join(d for _, d in items if d.startswith("lectures/"))
     homework = "\n".join(d for _, d in items if d.startswith("homework/"))
