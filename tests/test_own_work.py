@@ -660,7 +660,7 @@ def test_the_red_team_one_liners_of_hw01_raise_in_hw01():
         assert qid in str(info.value) or "hw01.q4" in str(info.value), str(info.value)
 
 
-# ------------------------------------------------------------------ one-liners, and the README
+# ------------------------------------------------------- one-liners, and the grading page
 #: Questions with points that no course_lib function computes (nothing to guard).
 NO_LIBRARY_ROUTE = {
     "hw03.q6": "the closed form of the left derivative: no function of course_lib is symbolic here",
@@ -671,7 +671,7 @@ NO_LIBRARY_ROUTE = {
 def _readme_open_to_one_liners() -> set[str]:
     import re
 
-    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    text = (ROOT / "site" / "grading.md").read_text(encoding="utf-8")
     start = text.index("Open to a **one-liner**")
     part = " ".join(text[start : text.index("worth **0 points**", start)].split())
     listed, hw = set(), None

@@ -1,4 +1,4 @@
-"""A semester, end to end, as the README tells its people to live it (issue 23).
+"""A semester, end to end, as the course's pages tell its people to live it (issue 23).
 
 The instructor downloads the Canvas gradebook as the roster, makes a course secret and the
 students' codes with ``tools/variant.py`` (run as printed); the students each get the student
@@ -11,7 +11,7 @@ a cell of the notebook itself.  The files arrive as Canvas's "Download Submissio
 * Tom (1004) opened and saved his submission after ``submit()`` (a markdown cell changed);
 * Sam (1005) used Jane's code;  a stranger not on the roster;  Mia (1006) handed in nothing.
 
-``tools/grade.py`` grades them as the README prints it; the import file is read back as Canvas
+``tools/grade.py`` grades them as ``site/semester.md`` prints it; the import file is read back as Canvas
 reads it; Ann is regraded with ``--only``.  Every honest student has full marks; every flag is
 in the summary's first section and in the status column.
 """
@@ -104,7 +104,7 @@ def semester(tmp_path_factory):
     course = base / "instructor"
     course.mkdir()
     (course / "gradebook.csv").write_text(GRADEBOOK, encoding="utf-8")
-    # the instructor: a secret, the codes (README: tools/variant.py ...)
+    # the instructor: a secret, the codes (site/semester.md: tools/variant.py ...)
     run("tools/variant.py", "secret", "--out", str(course / "course_secret.txt"))
     run("tools/variant.py", "codes", HW, "--secret-file", str(course / "course_secret.txt"),
         "--roster", str(course / "gradebook.csv"), "--out", str(course / "codes.csv"))  # fmt: skip
@@ -336,7 +336,7 @@ def test_moodle_flags_are_in_the_summary(moodle):
 
 
 def test_an_assignment_the_canvas_export_lacks_stops_before_grading(tmp_path):
-    """README: ASSIGNMENT= names the export's column; a wrong name stops with the columns."""
+    """site/semester.md: ASSIGNMENT= names the export's column; a wrong name stops with the columns."""
     (tmp_path / "gradebook.csv").write_text(GRADEBOOK, encoding="utf-8")
     (tmp_path / "subs").mkdir()
     (tmp_path / "subs" / "doejane_20001_70001_hw01-1001.ipynb").write_text("{}", encoding="utf-8")
@@ -357,12 +357,12 @@ def test_an_assignment_the_canvas_export_lacks_stops_before_grading(tmp_path):
 
 
 def test_the_student_data_the_readme_names_is_git_ignored():
-    """README, "Where student data lives": rosters, codes and grades are never committed."""
+    """site/semester.md, "Where student data lives": rosters, codes and grades are never committed."""
     paths = ["codes.csv", "codes-hw01.csv", "roster.csv", "gradebook.csv", "worksheet.csv",
              "course_secret.txt", "grades/hw01/scores.csv", "grading-output/hw01/scores.csv",
              "submissions/hw01-1001.ipynb"]  # fmt: skip
     done = subprocess.run(["git", "check-ignore", "--no-index", *paths], cwd=ROOT,
                           capture_output=True, text=True)  # fmt: skip
     assert sorted(done.stdout.split()) == sorted(paths), done.stdout
-    readme = (ROOT / "README.md").read_text(encoding="utf-8")
-    assert all(f"`{p}`" in readme for p in ("codes*.csv", "roster*.csv", "grades/"))
+    page = (ROOT / "site" / "semester.md").read_text(encoding="utf-8")
+    assert all(f"`{p}`" in page for p in ("codes*.csv", "roster*.csv", "grades/"))

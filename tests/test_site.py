@@ -12,7 +12,7 @@ folder, execution cached in ``build/site-cache/``, then one PDF per lecture), th
   asked of the network; screenshots go to ``test-artifacts/site/``;
 * each PDF has a plausible number of pages for its lecture and contains the caption (the
   prose around the picture, read from the lecture's markdown) of every seed figure that
-  the README's figure table places in that lecture;
+  the figure table (``site/figures.md``) places in that lecture;
 * no solution marker, solution line, hidden-test name or hidden-test message anywhere in the
   site or the PDFs.
 
@@ -162,10 +162,15 @@ def _html_files(site: Path) -> list[Path]:
     return sorted(site.rglob("*.html"))
 
 
-def _site_text(site: Path) -> str:
-    """Everything a reader (or a search engine) can get from the site."""
-    parts = [html.unescape(p.read_text(errors="replace")) for p in _html_files(site)]
-    parts += [p.read_text(errors="replace") for p in site.rglob("*.js") if "mathjax" not in p.parts]
+def _site_text(site: Path, guides: bool = True) -> str:
+    """Everything a reader (or a search engine) can get from the site; with
+    ``guides=False`` without the guides (``site/*.md``) and the search index that holds
+    their words: they name the instructors' folders (``solutions/hidden_tests/``) on purpose."""
+    names = {f"{g}.html" for _, gs in build_site.GUIDES for g in gs}
+    parts = [html.unescape(p.read_text(errors="replace")) for p in _html_files(site)
+             if guides or p.relative_to(site).as_posix() not in names]  # fmt: skip
+    parts += [p.read_text(errors="replace") for p in site.rglob("*.js") if "mathjax" not in p.parts
+              and (guides or p.name != "searchindex.js")]  # fmt: skip
     parts += [p.read_text(errors="replace") for p in site.rglob("*.txt")]
     return "\n".join(parts)
 
@@ -212,6 +217,9 @@ def test_every_lecture_and_homework_has_a_page_and_no_solution_is_there(site):
         assert (site / "homework" / f"{stem}.html").is_file(), stem
     for name in ("index.html", "course.html", "search.html", "searchindex.js"):
         assert (site / name).is_file(), name
+    for _, guides in build_site.GUIDES:  # the guides the README links
+        for name in guides:
+            assert (site / f"{name}.html").is_file(), name
     names = {p.relative_to(site).as_posix() for p in site.rglob("*")}
     assert not [n for n in names if re.search(r"solution|hidden_test|homework_src", n, re.I)]
     # the live-demo note is on the page of every lecture that shows a demo
@@ -260,10 +268,14 @@ def test_internal_links_resolve_and_nothing_comes_from_another_host(site):
     for css in site.rglob("*.css"):
         hits = re.findall(r"(?:url\(|@import)\s*['\"]?(?:https?:)?//[^)'\"]+", css.read_text(errors="replace"))
         assert not hits, f"{css.relative_to(site)}: {hits[:3]}"
-    # the README's figure table links into the lecture pages, at the cells it names
-    course = parsed[site / "course.html"]
-    cell_links = [u for _, _, u in course.refs if "#cell-" in u]
+    # the figure table links into the lecture pages, at the cells it names
+    figures = parsed[site / "figures.html"]
+    cell_links = [u for _, _, u in figures.refs if "#cell-" in u]
     assert len(cell_links) >= 20, cell_links
+    # the course map links every lecture's page
+    course = parsed[site / "course.html"]
+    lectures = {Path(urlsplit(u).path).stem for _, _, u in course.refs if "lectures/" in u}
+    assert lectures == {p.stem for p in (ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb")}
 
 
 def _browse(site: Path, chromium: str) -> dict:
@@ -435,9 +447,9 @@ def test_pages_render_math_and_images_offline(browsed, name):
 
 # ----------------------------------------------------------------------------- handouts
 def _figure_rows() -> list[tuple[str, str, list[str]]]:
-    """(figure, notebook number, cell ids) of the README's figure table."""
+    """(figure, notebook number, cell ids) of the figure table (``site/figures.md``)."""
     rows = []
-    for line in (ROOT / "README.md").read_text().splitlines():
+    for line in (ROOT / "site" / "figures.md").read_text().splitlines():
         if re.match(r"\| (000|001|004) Figs?\.", line):
             cols = [c.strip() for c in line.strip().strip("|").split("|")]
             rows.append((cols[0], cols[1], re.findall(r"`([\w-]+)`", cols[2])))
@@ -455,7 +467,7 @@ def _plain(markdown: str) -> str:
 
 
 def figure_captions(stem: str) -> dict[str, list[str]]:
-    """For each seed figure the README places in lecture ``stem``: its caption, i.e. the
+    """For each seed figure the figure table places in lecture ``stem``: its caption, i.e. the
     sentence of the lecture's markdown that names the figure (in the listed cell or the
     nearest markdown cell before it), as the word runs between math and code."""
     nb = json.loads((ROOT / "notebooks" / f"{stem}.ipynb").read_text())
@@ -521,7 +533,7 @@ def test_one_handout_per_lecture_with_its_pages_and_figure_captions(site, handou
             if missing:
                 problems.append(f"{stem}: caption of {fig} missing: {missing}")
     assert not problems, "\n".join(problems)
-    # every figure of the README's table was found in some lecture
+    # every figure of the table was found in some lecture
     found = {fig for s in lectures for fig in figure_captions(s)}
     assert found == {r[0] for r in _figure_rows()}
 
@@ -580,9 +592,12 @@ def test_no_solution_or_hidden_test_in_site_or_handouts(site, handouts):
     hidden = _hidden_test_strings()
     assert solution and hidden
     found = []
+    # the guides (grading, semester, developing) name the hidden tests' folder and files: the
+    # markers are looked for everywhere else; solution lines and hidden-test text everywhere
+    marked = {"site": _site_text(site, guides=False)}
     for where, text in texts.items():
         flat = re.sub(r"\s+", " ", text)
-        found += [f"{where}: marker {m!r}" for m in markers if m in text]
+        found += [f"{where}: marker {m!r}" for m in markers if m in marked.get(where, text)]
         found += [f"{where}: solution line {s!r}" for s in solution if re.sub(r"\s+", " ", s) in flat]
         found += [f"{where}: hidden-test text {s!r}" for s in hidden if re.sub(r"\s+", " ", s) in flat]
     assert not found, "\n".join(found[:30])
@@ -713,13 +728,16 @@ def test_the_build_never_reads_solutions():
         assert doc.split("/")[0] in ("lectures", "homework")
 
 
-def test_course_page_links_the_figure_table_into_the_lectures():
-    docs = {p.stem: d for p, d in build_site.source_notebooks()}
-    ids = {p.stem: {c.get("id") for c in json.loads(p.read_text())["cells"]}
-           for p, _ in build_site.source_notebooks()}
-    page = build_site.course_page(docs, ids)
+def test_the_figure_table_links_into_the_lectures():
+    items = build_site.source_notebooks()
+    docs = {p.stem: d for p, d in items}
+    ids = {p.stem: {c.get("id") for c in json.loads(p.read_text())["cells"]} for p, _ in items}
+    text = (ROOT / "site" / "figures.md").read_text()
+    page = build_site.guide_page("figures", text, docs, ids)
     rows = [x for x in page.splitlines() if re.match(r"\| (000|001|004) Fig", x)]
     assert len(rows) == len(_figure_rows())
     for row in rows:
         assert "{doc}`" in row and "{ref}`" in row and "<cell-" in row, row
-    assert "](notebooks/" not in page and "](exercises/" not in page
+    course = build_site.course_page(docs)
+    assert "](notebooks/" not in course and "](exercises/" not in course
+    assert all(f"</{d}>`" in course for d in docs.values()), "every lecture and homework linked"

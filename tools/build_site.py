@@ -13,8 +13,12 @@ the repository; the build works on copies in ``build/site-src/``:
    JupyterLab shows them) get MyST-NB's ``hide-input`` tag, i.e. collapsed like in
    JupyterLab; ``jupyter.outputs_hidden`` gives ``hide-output``; each cell id becomes an
    anchor ``cell-<id>``; after each demo a note says how to run it live.
-3. **Pages from the README**: the lecture table, the figure table and the errors table,
-   with their links pointing into the pages (``course.md``).
+3. **Pages**: the course map (``course.md``: the README's lecture and homework tables, their
+   links pointing into the pages) and the guides, the Markdown pages of ``site/`` listed in
+   ``GUIDES`` (teaching, grading, accessibility, ...).  In a guide, a link to a notebook on the
+   site points at its page, a link to another file of the repository keeps its text only (the
+   site has no such page), and the figure table's cell ids and the errors table's
+   "notebook NN" link into the lectures.
 4. **Sphinx** (``sphinx-build -b html``, no execution) with MathJax served from
    ``_static/mathjax`` (the ``jupyter-server-mathjax`` package): no CDN, no network.
 
@@ -49,6 +53,15 @@ BUILD = ROOT / "build"
 DEFAULT_OUT = BUILD / "site"
 CACHE = BUILD / "site-cache"
 
+#: The guides: Markdown pages of site/ (written for GitHub: their relative links resolve in the
+#: repository), in the site's navigation under these captions, in this order.
+GUIDES: tuple[tuple[str, tuple[str, ...]], ...] = (
+    ("For students", ("homework",)),
+    ("For lecturers", ("teaching", "figures", "sources-errata")),
+    ("For instructors", ("student-edition", "semester", "grading")),
+    ("About the course", ("accessibility", "performance")),
+    ("For contributors", ("developing", "api", "dependencies")),
+)
 #: (folder in the repository, folder on the site, glob).  Never solutions/.
 SOURCES = (("notebooks", "lectures", "[0-9][0-9]_*.ipynb"), ("exercises", "homework", "hw*.ipynb"))
 FORBIDDEN = ("solutions", "homework_src", "hidden_tests")
@@ -273,76 +286,113 @@ def _section(readme: str, heading: str) -> str:
     return m.group(2).strip()
 
 
-def course_page(docs: dict[str, str], cell_ids: dict[str, set[str]]) -> str:
-    """``course.md``: the README's lecture, figure and errors tables, linked into the site."""
+def _doc_for(docs: dict[str, str], prefix: str) -> str | None:
+    return next((d for stem, d in docs.items() if stem.startswith(prefix)), None)
+
+
+def link_notebooks(text: str, docs: dict[str, str]) -> str:
+    """README links ``[`stem`](notebooks/stem.ipynb)`` as links to the pages and links to a
+    guide (``site/NAME.md``) as links to its page (from a page at the top of the site); any
+    other relative link keeps its text only (the site has no such page)."""
+    guides = "|".join(re.escape(g) for _, names in GUIDES for g in names)
+
+    def repl(m):
+        stem = Path(m.group(2)).stem
+        d = docs.get(stem)
+        return f"{{doc}}`{m.group(1)} </{d}>`" if d else m.group(1)
+
+    text = re.sub(r"\[`([^`\]]+)`\]\(((?:notebooks|exercises)/[^)]+\.ipynb)\)", repl, text)
+    text = re.sub(rf"\]\(site/((?:{guides})\.md(?:#[^)]*)?)\)", r"](\1)", text)
+    return re.sub(rf"\[([^\]]+)\]\((?!https?:|#|(?:{guides})\.md)[^)]+\)", r"\1", text)
+
+
+def link_figure_row(line: str, docs: dict[str, str], cell_ids: dict[str, set[str]]) -> str:
+    """A row ``| figure | NN | section (`cell-id`) |``: the lecture number and the cell ids
+    become links into the lecture's page."""
+    cols = line.strip().strip("|").split("|")
+    if len(cols) < 3 or not re.fullmatch(r"\s*\d\d\s*", cols[1]):
+        return line
+    nb = cols[1].strip()
+    d = _doc_for(docs, nb)
+    if d is None:
+        return line
+    stem = d.split("/")[-1]
+
+    def cell(m):
+        cid = m.group(1)
+        if cid in cell_ids.get(stem, set()):
+            return f"{{ref}}`{cid} <cell-{cid}>`"
+        return m.group(0)
+
+    cols[1] = f" {{doc}}`{nb} </{d}>` "
+    cols[2] = re.sub(r"`([\w-]+)`", cell, cols[2])
+    return "|" + "|".join(cols) + "|"
+
+
+def link_errors(text: str, docs: dict[str, str]) -> str:
+    """Each "notebook NN" and "hwNN" as a link to its page."""
+
+    def nb(m):
+        d = _doc_for(docs, m.group(1))
+        return f"{{doc}}`notebook {m.group(1)} </{d}>`" if d else m.group(0)
+
+    def hw(m):
+        d = _doc_for(docs, m.group(1))
+        return f"{{doc}}`{m.group(1)} </{d}>`" if d else m.group(0)
+
+    text = re.sub(r"notebook (\d\d)\b", nb, text)
+    return re.sub(r"\b(hw\d\d)\b", hw, text)
+
+
+def course_page(docs: dict[str, str]) -> str:
+    """``course.md``: the README's lecture and homework tables, linked into the site."""
     readme = (ROOT / "README.md").read_text()
-
-    def doc_for(prefix: str) -> str | None:
-        return next((d for stem, d in docs.items() if stem.startswith(prefix)), None)
-
-    def link_notebooks(text: str) -> str:
-        def repl(m):
-            stem = Path(m.group(2)).stem
-            d = docs.get(stem)
-            return f"{{doc}}`{m.group(1)} </{d}>`" if d else m.group(1)
-
-        text = re.sub(r"\[`([^`\]]+)`\]\(((?:notebooks|exercises)/[^)]+\.ipynb)\)", repl, text)
-        # any other relative link: keep its text only (the site has no such page)
-        text = re.sub(r"\[([^\]]+)\]\((?!https?:|#)[^)]+\)", r"\1", text)
-        return text
-
-    def link_figure_row(line: str) -> str:
-        cols = line.strip().strip("|").split("|")
-        if len(cols) < 3 or not re.fullmatch(r"\s*\d\d\s*", cols[1]):
-            return line
-        nb = cols[1].strip()
-        d = doc_for(nb)
-        if d is None:
-            return line
-        stem = d.split("/")[-1]
-
-        def cell(m):
-            cid = m.group(1)
-            if cid in cell_ids.get(stem, set()):
-                return f"{{ref}}`{cid} <cell-{cid}>`"
-            return m.group(0)
-
-        cols[1] = f" {{doc}}`{nb} </{d}>` "
-        cols[2] = re.sub(r"`([\w-]+)`", cell, cols[2])
-        return "|" + "|".join(cols) + "|"
-
-    def link_errors(text: str) -> str:
-        def nb(m):
-            d = doc_for(m.group(1))
-            return f"{{doc}}`notebook {m.group(1)} </{d}>`" if d else m.group(0)
-
-        def hw(m):
-            d = doc_for(m.group(1))
-            return f"{{doc}}`{m.group(1)} </{d}>`" if d else m.group(0)
-
-        text = re.sub(r"notebook (\d\d)\b", nb, text)
-        return re.sub(r"\b(hw\d\d)\b", hw, text)
-
-    lectures = link_notebooks(_section(readme, "The lectures"))
-    lectures = lectures.split("\n### ", 1)[0]
-    figures = "\n".join(
-        link_figure_row(x) for x in _section(readme, "Every figure of the sources").splitlines()
-    )
-    errors = link_errors(link_notebooks(_section(readme, "Errors in the sources")))
+    lectures = link_notebooks(_section(readme, "The lectures"), docs)
+    homework = link_notebooks(_section(readme, "Homework"), docs)
     return (
         "# Course map\n\n"
-        "The lectures in order, every figure of the three sources and where it is drawn, and the\n"
-        "errors found in the sources (taught in place). The tables are the README's.\n\n"
+        "The lectures in order and the homework that follows them. Every figure of the three\n"
+        "sources is listed in {doc}`figures`, every error found in them in\n"
+        "{doc}`sources-errata`.\n\n"
         f"## The lectures\n\n{lectures}\n\n"
-        f"## Every figure of the sources\n\n{figures}\n\n"
-        f"## Errors in the sources\n\n{errors}\n"
+        f"## Homework\n\n{homework}\n"
     )
+
+
+def guide_page(name: str, text: str, docs: dict[str, str], cell_ids: dict[str, set[str]]) -> str:
+    """The site version of the guide ``site/<name>.md`` (see the module docstring, step 3);
+    ``docs`` maps notebook stems to their documents."""
+    guides = {g for _, names in GUIDES for g in names}
+
+    def repl(m):
+        label, target = m.group(1), m.group(2)
+        if re.match(r"[a-z]+:|#", target):
+            return m.group(0)
+        path, _, frag = target.partition("#")
+        rel = os.path.normpath(Path("site") / path).replace(os.sep, "/")
+        if rel.startswith("site/") and rel.endswith(".md") and rel[5:-3] in guides:
+            return m.group(0)
+        stem = Path(rel).stem
+        if (
+            rel.endswith(".ipynb")
+            and rel.split("/")[0] in ("notebooks", "exercises")
+            and stem in docs
+        ):
+            return f"[{label}]({docs[stem]}.ipynb{'#' + frag if frag else ''})"
+        return label
+
+    text = MD_LINK.sub(repl, text)
+    if name == "figures":
+        text = "\n".join(link_figure_row(x, docs, cell_ids) for x in text.splitlines()) + "\n"
+    if name == "sources-errata":
+        text = link_errors(text, docs)
+    return text
 
 
 def index_page(items: list[tuple[Path, str]]) -> str:
     readme = (ROOT / "README.md").read_text()
     intro = readme.split("\n## ", 1)[0].split("\n", 1)[1].strip()
-    intro = re.sub(r"\[([^\]]+)\]\((?!https?:)[^)]+\)", r"\1", intro)
+    intro = link_notebooks(intro, {})
     intro = re.sub(r" \(in `[^`]*`\)", "", intro)
     lectures = "\n".join(d for _, d in items if d.startswith("lectures/"))
     homework = "\n".join(d for _, d in items if d.startswith("homework/"))
@@ -353,7 +403,8 @@ def index_page(items: list[tuple[Path, str]]) -> str:
         "pictures; every live demo is replaced by its static picture, with a note saying how to "
         "run it live (`make lab`, then the notebook in JupyterLab). Cells that only check a claim "
         "(test evidence) are collapsed: click to open them. The {doc}`course map <course>` lists "
-        "every figure of the sources and every error found in them, with links into the pages.\n",
+        "the lectures and the homework; the guides below are for students, lecturers, "
+        "instructors and contributors.\n",
         "```{toctree}\n:maxdepth: 1\n:caption: Course map\n\ncourse\n```\n",
     ]
     if lectures:
@@ -362,6 +413,10 @@ def index_page(items: list[tuple[Path, str]]) -> str:
         parts.append(
             "```{toctree}\n:maxdepth: 1\n:caption: Homework (blank, as students get it)\n\n"
             f"{homework}\n```\n"
+        )
+    for caption, names in GUIDES:
+        parts.append(
+            f"```{{toctree}}\n:maxdepth: 1\n:caption: {caption}\n\n" + "\n".join(names) + "\n```\n"
         )
     return "\n".join(parts)
 
@@ -420,7 +475,11 @@ def build(
         target.write_text(json.dumps(page, ensure_ascii=False, indent=1))
         docs[path.stem] = doc
         cell_ids[path.stem] = {c.get("id") for c in nb["cells"]}
-    (stage / "course.md").write_text(course_page(docs, cell_ids))
+    (stage / "course.md").write_text(course_page(docs))
+    for _, names in GUIDES:
+        for name in names:
+            text = (SITE_CONF / f"{name}.md").read_text()
+            (stage / f"{name}.md").write_text(guide_page(name, text, docs, cell_ids))
     (stage / "index.md").write_text(index_page(items))
 
     if out.exists():

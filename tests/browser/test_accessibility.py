@@ -6,7 +6,7 @@
   path of ``axe.min.js``) is injected into each page after MathJax has typeset it, with the
   rules tagged ``wcag2a``, ``wcag2aa``, ``wcag21a``, ``wcag21aa``: no violation that is the
   course's own (the toolchain's are listed in ``UPSTREAM`` with their issue, and in the
-  README's accessibility statement).  Every ``<img>`` has an ``alt`` that is a sentence,
+  accessibility statement, ``site/accessibility.md``).  Every ``<img>`` has an ``alt`` that is a sentence,
   never empty or a file name.
 * **Handouts**: the welcome lecture's PDF is tagged (a structure tree, ``/MarkInfo``), has
   ``/Lang``, a title and bookmarks, and its figure carries the cell's alt text.
@@ -47,7 +47,7 @@ PAGES = ["index.html", "course.html", f"lectures/{LECTURE}.html", f"homework/{HO
 NOTEBOOK = ROOT / "notebooks" / f"{LECTURE}.ipynb"
 
 #: Violations that are the toolchain's, not the course's: (rule id, a CSS-selector fragment
-#: of the offending node, why, upstream issue).  The README's accessibility statement lists them.
+#: of the offending node, why, upstream issue).  The accessibility statement lists them.
 UPSTREAM: list[tuple[str, str, str, str]] = []
 
 
