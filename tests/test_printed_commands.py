@@ -32,18 +32,56 @@ A few commands cannot be run as printed in a test; each is run in a form that sh
 what it says (one row per command in :data:`EQUIVALENT`; a harvested command matched by no row
 runs as printed):
 
-=====================  ========================================================================
-``make lab``           started as printed; passes when the JupyterLab it starts answers its
-                       ``/lab`` URL and serves ``notebooks/00_welcome.ipynb``, then its process
-                       group is stopped (it serves until stopped, and opens a browser)
-``make present ...``   ``make -n``: the exact recipe (a Voila server, until stopped)
-``make install``       ``make -q install`` must report the install stamp up to date and
-                       ``make -n install`` must show nothing to run (never reinstalls)
-``make test``          ``make -n test``: the exact recipe (the whole suite, this test in it)
-``make site``          ``make -n site``: the exact recipe (minutes; ``tests/test_site.py``
-                       builds the site)
-``make handouts``      ``make -n handouts`` (the site, then Chromium; ``tests/test_site.py``)
-=====================  ========================================================================
+====================================  =========================================================
+``make lab``                          started as printed; passes when the JupyterLab it starts
+                                      answers its ``/lab`` URL and serves
+                                      ``notebooks/00_welcome.ipynb``, then its process group is
+                                      stopped (it serves until stopped, and opens a browser)
+``make present ...``                  ``make -n``: the exact recipe (a Voila server, until
+                                      stopped; ``tests/browser/test_lecture_deck.py`` serves it)
+``make install``                      ``make -q install`` must report the install stamp up to
+                                      date and ``make -n install`` must show nothing to run
+                                      (never reinstalls)
+``make test``                         ``make -n test``: the exact recipe (the whole suite, this
+                                      test in it)
+``make site``                         ``make -n site``: the exact recipe (minutes;
+                                      ``tests/test_site.py`` builds the site)
+``make handouts``                     ``make -n handouts`` (the site, then Chromium;
+                                      ``tests/test_site.py``)
+``make bench``                        ``make -n bench``, whose recipe must be
+                                      ``.venv/bin/python benchmarks/run.py`` (the next row)
+``.venv/bin/python benchmarks/run.py  with ``--quick --only evaluation`` added (the full run
+[option]``                            takes minutes; ``--quick``, printed too, runs as printed
+                                      and runs every item at small sizes): the option's code
+                                      path on item 1; the plain command also with ``--output
+                                      benchmarks/results.md``, which must write ``results.md``
+                                      and ``results.json``
+``...grading_throughput.py``          with ``--copies 1 --jobs 1``: the same grading of a
+                                      solution copy, which must score full marks
+``.venv/bin/python -m pytest          with ``--collect-only -q``: the four test modules the
+tests/browser``                       pages name must be collected (running them takes minutes
+                                      of Chromium; ``make test`` runs them)
+``conda env create -f environment.yml  static (conda is not installed here, and creating the
+&& conda activate NAME``              environment downloads every package): the file parses,
+                                      creates the environment ``NAME`` and installs JupyterLab
+                                      and the course (``pip: -e .``);
+                                      ``tests/unit/test_environment.py`` checks its versions
+``jupyter lab notebooks/``            started with ``.venv/bin`` first on PATH (the activated
+                                      environment; ``--allow-root`` added when run as root, as
+                                      the Makefile adds it); ``/lab`` must answer with
+                                      ``notebooks/`` as its root (``00_welcome.ipynb``); stopped
+``pip index versions NAME``           with ``--help`` added, ``.venv/bin`` first on PATH: pip
+                                      has the command and reads the line (the query itself
+                                      needs the network)
+``.venv/bin/voila NOTEBOOK``          started as printed; its page must be the executed
+                                      notebook, without an error; stopped
+``.venv/bin/python -m http.server -d  started as printed on a stand-in ``build/site/index.html``
+build/site 8000``                     (the real build takes minutes; ``tests/test_site.py``);
+                                      the page's ``http://127.0.0.1:8000`` must serve it; stopped
+====================================  =========================================================
+
+The multi-machine Dask commands of ``site/grading.md`` are a ```text synopsis (``HOST``); they
+are run on this machine by :func:`test_the_dask_synopsis_grades_on_one_machine`.
 
 The grader's and the hand-in's output never carries the kernel's "running over TCP" start-up
 warning (the grader's kernels use IPC and a silenced stderr; ``submit()`` filters the warning).
@@ -51,10 +89,12 @@ warning (the grader's kernels use IPC and a silenced stderr; ``submit()`` filter
 
 from __future__ import annotations
 
+import csv
 import os
 import re
 import shutil
 import signal
+import socket
 import subprocess
 import sys
 import time
@@ -99,8 +139,10 @@ class Command:
         return f"{self.doc}:{self.line}: {self.text}"
 
 
-def harvest(text: str, doc: str) -> list[Command]:
-    """The commands of a Markdown text, by the convention of the module docstring."""
+def harvest(text: str, doc: str, prompt_blocks: tuple[str, ...] = PROMPT_BLOCKS,
+            script_blocks: tuple[str, ...] = SCRIPT_BLOCKS) -> list[Command]:  # fmt: skip
+    """The commands of a Markdown text, by the convention of the module docstring (other
+    ``prompt_blocks`` read the ``$ `` lines of, e.g., ``text`` synopses)."""
     out: list[Command] = []
     lines = text.splitlines()
     i = 0
@@ -114,8 +156,8 @@ def harvest(text: str, doc: str) -> list[Command]:
         while j < len(lines) and not lines[j].strip().startswith(fence):
             body.append((j + 1, lines[j]))
             j += 1
-        if info in PROMPT_BLOCKS or info in SCRIPT_BLOCKS:
-            out += _commands(body, doc, prompt=info in PROMPT_BLOCKS)
+        if info in prompt_blocks or info in script_blocks:
+            out += _commands(body, doc, prompt=info in prompt_blocks)
         i = j + 1
     return out
 
@@ -259,39 +301,207 @@ def _make_n(cmd: Command, root: Path, target: str) -> tuple[str, str]:
     return f"make -n {target}", out
 
 
+def _make_bench(cmd: Command, root: Path) -> tuple[str, str]:
+    """``make bench``: its recipe is the benchmark script as the page prints it next."""
+    how, out = _make_n(cmd, root, "bench")
+    assert re.search(r"^\.venv/bin/python benchmarks/run\.py\s*$", out, re.M), f"{cmd}\n{out}"
+    return how + " (the recipe is `.venv/bin/python benchmarks/run.py`, run below)", out
+
+
+def _run(cmd: Command, text: str, root: Path, env: dict[str, str] | None = None) -> str:
+    done = subprocess.run(["bash", "-c", text], cwd=root, env=env or _env(root),
+                          capture_output=True, text=True, timeout=600)  # fmt: skip
+    output = done.stdout + done.stderr
+    assert done.returncode == 0, f"{cmd}\nrun as: {text}\nexit {done.returncode}:\n{output[-4000:]}"
+    return output
+
+
+def _activated(root: Path) -> dict[str, str]:
+    """The environment with the course's ``.venv/bin`` first on PATH, as an activated
+    environment (``conda activate``, ``source .venv/bin/activate``) would have it."""
+    env = _env(root)
+    env["PATH"] = f"{root / '.venv' / 'bin'}{os.pathsep}{env.get('PATH', '')}"
+    return env
+
+
+def _bench(cmd: Command, root: Path) -> tuple[str, str]:
+    """``benchmarks/run.py [option]``: with ``--quick --only evaluation`` added.
+
+    The full run takes one to two minutes; ``--quick`` (printed too, and run as printed) runs
+    every item at small sizes.  Here the option's own code path runs on the first item, and
+    the plain command writes its files (``--output``, the same code that writes
+    ``benchmarks/results.md`` and ``results.json``)."""
+    text = f"{cmd.text} --quick --only evaluation"
+    plain = cmd.text.split() == [".venv/bin/python", "benchmarks/run.py"]
+    if plain:
+        text += " --output benchmarks/results.md"
+    output = _run(cmd, text, root)
+    assert "| 1 |" in output or "evaluation" in output, f"{cmd}\n{output[-3000:]}"
+    if plain:
+        for name in ("results.md", "results.json"):
+            assert (root / "benchmarks" / name).stat().st_size > 0, f"{cmd}: no {name}"
+    return f"as `{text}` (the full run takes minutes)", output
+
+
+def _throughput(cmd: Command, root: Path) -> tuple[str, str]:
+    """``grading_throughput.py``: one copy, one job -- the same grading of a solution."""
+    text = f"{cmd.text} --copies 1 --jobs 1"
+    output = _run(cmd, text, root)
+    assert "(1/1 at full marks" in output, f"{cmd}\n{output[-3000:]}"
+    return f"as `{text}` (20 copies take a minute)", output
+
+
+#: the browser test modules the pages name (site/developing.md, site/performance.md)
+BROWSER_TESTS = ("test_jupyterlab.py", "test_lecture_deck.py", "test_demo_latency.py",
+                 "test_accessibility.py")  # fmt: skip
+
+
+def _browser_tests(cmd: Command, root: Path) -> tuple[str, str]:
+    """The browser tests: collected, not run (minutes of Chromium; ``make test`` runs them)."""
+    text = f"{cmd.text} --collect-only -q"
+    output = _run(cmd, text, root)
+    assert re.search(r"^\d+ tests? collected", output, re.M), f"{cmd}\n{output[-3000:]}"
+    for name in BROWSER_TESTS:
+        assert f"tests/browser/{name}::" in output, f"{cmd}: {name} not collected\n{output}"
+    return f"as `{text}` (runs in `make test`; minutes of Chromium)", output
+
+
+def _pip_index(cmd: Command, root: Path) -> tuple[str, str]:
+    """``pip index versions NAME`` asks PyPI (the network): here pip's offline ``--help`` of
+    the same command line shows that this pip has the command and reads its arguments."""
+    text = f"{cmd.text} --help"
+    output = _run(cmd, text, root, _activated(root))
+    assert "pip index versions" in output or "Usage:" in output, output
+    return f"as `{text}` with .venv/bin on PATH (the query needs the network)", output
+
+
+def _conda_env(cmd: Command, root: Path) -> tuple[str, str]:
+    """``conda env create -f FILE && conda activate NAME``: checked statically.
+
+    conda is not part of the course's environment and creating the environment downloads
+    every package; the file must exist, parse, name the environment ``NAME`` and install
+    JupyterLab and the course (``pip: -e .``, so ``jupyter lab notebooks/`` finds
+    ``course_lib``).  tests/unit/test_environment.py checks its versions against
+    constraints.txt."""
+    import yaml
+
+    m = re.fullmatch(r"conda env create -f (\S+) && conda activate (\S+)", cmd.text)
+    assert m, f"{cmd}: not the form this check reads"
+    spec = yaml.safe_load((root / m[1]).read_text(encoding="utf-8"))
+    assert spec["name"] == m[2], f"{cmd}: {m[1]} creates {spec['name']!r}, not {m[2]!r}"
+    deps = spec["dependencies"]
+    names = [d.split("=")[0] for d in deps if isinstance(d, str)]
+    pips = [p for d in deps if isinstance(d, dict) for p in d.get("pip", [])]
+    assert "jupyterlab" in names and "pip" in names and "-e ." in pips, spec
+    return f"static: {m[1]} parses and creates the environment {m[2]!r} (no conda here)", ""
+
+
+def _serve(cmd: Command, root: Path, url_re: str, env: dict[str, str] | None = None,
+           text: str | None = None) -> tuple[subprocess.Popen, str, Path]:  # fmt: skip
+    """Start ``text`` (default: the command as printed) until its log shows ``url_re``."""
+    log = root / f".printed-commands-{cmd.line}.log"
+    with open(log, "wb") as fh:
+        proc = subprocess.Popen(["bash", "-c", text or cmd.text], cwd=root,
+                                env=env or _env(root), stdout=fh, stderr=subprocess.STDOUT,
+                                start_new_session=True)  # fmt: skip
+    url, deadline = None, time.monotonic() + 90
+    while url is None and time.monotonic() < deadline and proc.poll() is None:
+        time.sleep(0.3)
+        m = re.search(url_re, log.read_text(errors="replace"))
+        url = m[0] if m else None
+    if url is None:
+        _stop(proc)
+        pytest.fail(f"{cmd}: did not start serving\n{log.read_text(errors='replace')[-3000:]}")
+    return proc, url, log
+
+
+def _stop(proc: subprocess.Popen) -> None:
+    try:
+        os.killpg(proc.pid, signal.SIGTERM)
+        proc.wait(timeout=20)
+    except ProcessLookupError:
+        proc.wait()
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        proc.wait()
+
+
+def _get(url: str) -> bytes:
+    with urllib.request.urlopen(url, timeout=120) as page:
+        assert page.status == 200, url
+        return page.read()
+
+
+LAB_URL = r"http://(?:127\.0\.0\.1|localhost):\d+/lab\?token=\w+"
+
+
+def _serves_welcome(url: str, notebook: str) -> None:
+    _get(url)
+    base, token = url.split("/lab?token=")
+    api = f"{base}/api/contents/{notebook}?content=0&token={token}"
+    assert b'"type": "notebook"' in _get(api), api
+
+
 def _serve_lab(cmd: Command, root: Path) -> tuple[str, str]:
     """``make lab`` as printed, until its server answers; then its process group is stopped."""
-    log = root / ".printed-commands-lab.log"
-    with open(log, "wb") as fh:
-        proc = subprocess.Popen(["bash", "-c", cmd.text], cwd=root, env=_env(root), stdout=fh,
-                                stderr=subprocess.STDOUT, start_new_session=True)  # fmt: skip
+    proc, url, log = _serve(cmd, root, LAB_URL)
     try:
-        url, deadline = None, time.monotonic() + 90
-        while url is None and time.monotonic() < deadline and proc.poll() is None:
-            time.sleep(0.5)
-            m = re.search(
-                r"http://(?:127\.0\.0\.1|localhost):\d+/lab\?token=\w+",
-                log.read_text(errors="replace"),
-            )
-            url = m[0] if m else None
+        _serves_welcome(url, "notebooks/00_welcome.ipynb")
         text = log.read_text(errors="replace")
-        assert url is not None, f"{cmd}: JupyterLab did not start\n{text[-3000:]}"
-        with urllib.request.urlopen(url, timeout=30) as page:
-            assert page.status == 200
-        base, token = url.split("/lab?token=")
-        api = f"{base}/api/contents/notebooks/00_welcome.ipynb?content=0&token={token}"
-        with urllib.request.urlopen(api, timeout=30) as page:
-            assert page.status == 200 and b'"type": "notebook"' in page.read()
         recipe = text.split("\n[")[0]  # what make echoed before the server's first log line
         assert "jupyter lab" in recipe and "notebooks/00_welcome.ipynb" in recipe, text[:500]
     finally:
-        try:
-            os.killpg(proc.pid, signal.SIGTERM)
-            proc.wait(timeout=20)
-        except (ProcessLookupError, subprocess.TimeoutExpired):
-            os.killpg(proc.pid, signal.SIGKILL)
-            proc.wait()
+        _stop(proc)
     return "started; /lab and notebooks/00_welcome.ipynb served; stopped", text
+
+
+def _serve_conda_lab(cmd: Command, root: Path) -> tuple[str, str]:
+    """``jupyter lab notebooks/`` in the activated environment: ``.venv/bin`` first on PATH
+    (the conda environment is checked statically, above), ``--allow-root`` added when this
+    test runs as root (JupyterLab refuses root without it; the Makefile adds it the same
+    way).  It must serve ``/lab`` with ``notebooks/`` as its root folder; then it is stopped."""
+    root_user = hasattr(os, "geteuid") and os.geteuid() == 0
+    text = cmd.text + (" --allow-root" if root_user else "")
+    proc, url, log = _serve(cmd, root, LAB_URL, env=_activated(root), text=text)
+    try:
+        _serves_welcome(url, "00_welcome.ipynb")
+    finally:
+        _stop(proc)
+    how = f"`{text}` started with .venv/bin on PATH; /lab and 00_welcome.ipynb served; stopped"
+    return how, log.read_text(errors="replace")
+
+
+def _serve_voila(cmd: Command, root: Path) -> tuple[str, str]:
+    """``.venv/bin/voila NOTEBOOK`` as printed: its page is the executed notebook, no error."""
+    proc, url, log = _serve(cmd, root, r"http://localhost:\d+/")
+    try:
+        page = _get(url).decode("utf-8", errors="replace")
+        name = Path(cmd.text.split()[-1]).stem
+        assert f"<title>{name}</title>" in page, page[:1000]
+        assert "Traceback" not in page and "error when executing" not in page, page[-3000:]
+        text = log.read_text(errors="replace")
+    finally:
+        _stop(proc)
+    assert "Traceback" not in text, text[-3000:]
+    # the kernel's own start-up warning is Voilà's business, not the grader's
+    return "started as printed; the executed notebook served; stopped", ""
+
+
+def _serve_site(cmd: Command, root: Path) -> tuple[str, str]:
+    """``python -m http.server -d build/site 8000``, as printed, on the folder ``make site``
+    writes (here a stand-in index: the build takes minutes; ``tests/test_site.py`` builds it
+    and opens it in Chromium).  The page's URL ``http://127.0.0.1:8000`` must serve it."""
+    site = root / "build" / "site"
+    site.mkdir(parents=True, exist_ok=True)
+    marker = "<!-- the site make site writes: stand-in of tests/test_printed_commands.py -->"
+    (site / "index.html").write_text(f"<html>{marker}</html>", encoding="utf-8")
+    env = _env(root) | {"PYTHONUNBUFFERED": "1"}  # its "Serving HTTP" line, unbuffered
+    proc, _url, _log = _serve(cmd, root, r"Serving HTTP on \S+ port 8000", env=env)
+    try:
+        assert marker in _get("http://127.0.0.1:8000/").decode(), "not the site folder"
+    finally:
+        _stop(proc)
+    return "started as printed on a stand-in build/site; http://127.0.0.1:8000 served; stopped", ""
 
 
 #: commands not run as printed, and how they are run instead (the table of the docstring)
@@ -302,6 +512,15 @@ EQUIVALENT = [
     (re.compile(r"^make\s+test\b"), lambda c, r: _make_n(c, r, "test")),
     (re.compile(r"^make\s+site\b"), lambda c, r: _make_n(c, r, "site")),
     (re.compile(r"^make\s+handouts\b"), lambda c, r: _make_n(c, r, "handouts")),
+    (re.compile(r"^make\s+bench\b"), _make_bench),
+    (re.compile(r"^\.venv/bin/python benchmarks/run\.py(?!.*--quick)"), _bench),
+    (re.compile(r"^\.venv/bin/python benchmarks/grading_throughput\.py$"), _throughput),
+    (re.compile(r"^\.venv/bin/python -m pytest tests/browser$"), _browser_tests),
+    (re.compile(r"^conda env create\b"), _conda_env),
+    (re.compile(r"^jupyter lab notebooks/$"), _serve_conda_lab),
+    (re.compile(r"^pip index versions \S+$"), _pip_index),
+    (re.compile(r"^\.venv/bin/voila notebooks/\S+\.ipynb$"), _serve_voila),
+    (re.compile(r"^\.venv/bin/python -m http\.server -d build/site 8000$"), _serve_site),
 ]
 
 
@@ -403,3 +622,40 @@ def test_grading_as_printed_writes_its_files_without_the_kernels_tcp_warning(rep
         for f in (root / "grades").rglob("*"):
             if f.is_file() and f.suffix in (".md", ".csv", ".json"):
                 assert KERNEL_TCP_WARNING not in f.read_text(encoding="utf-8"), f
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def test_the_dask_synopsis_grades_on_one_machine(repository_runs):
+    """site/grading.md's three Dask commands (a ```text synopsis: scheduler, worker, grader on
+    different machines) run here on one machine: ``HOST`` is 127.0.0.1 and the port a free
+    one (the scheduler is given ``--port``).  Each is run as printed otherwise, in the grading
+    page's scratch copy (its submissions folder), and every row must be graded."""
+    root, _ = repository_runs["site/grading.md"]
+    doc = (ROOT / "site" / "grading.md").read_text(encoding="utf-8")
+    synopsis = [c for c in harvest(doc, "site/grading.md", ("text",), ()) if "dask" in c.text]
+    kinds = ["dask scheduler", "dask worker", "--executor dask"]
+    assert [next(k for k in kinds if k in c.text) for c in synopsis] == kinds, synopsis
+    scheduler, worker, grader = synopsis
+    port = _free_port()
+    here = f"tcp://127.0.0.1:{port}"
+    started = []
+    try:
+        for cmd, text in ((scheduler, f"{scheduler.text} --port {port}"),
+                          (worker, worker.text.replace("tcp://HOST:8786", here))):  # fmt: skip
+            started.append(_serve(cmd, root, r"Registered to:|Scheduler at:", text=text)[0])
+        text = grader.text.replace("tcp://HOST:8786", here)
+        assert "HOST" not in text and here in text, text
+        output = _run(grader, text, root)
+    finally:
+        for proc in reversed(started):
+            _stop(proc)
+    assert "wrote " in output and "your-id:" in output, output[-3000:]
+    assert "grader error" not in output and "Traceback" not in output, output[-3000:]
+    with open(root / "grades" / "hw01" / "scores.csv", newline="", encoding="utf-8") as fh:
+        rows = list(csv.DictReader(fh))
+    assert rows and all(r["status"] != "grader error" for r in rows), rows
