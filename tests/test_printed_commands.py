@@ -81,7 +81,8 @@ build/site 8000``                     (the real build takes minutes; ``tests/tes
 ====================================  =========================================================
 
 The multi-machine Dask commands of ``site/grading.md`` are a ```text synopsis (``HOST``); they
-are run on this machine by :func:`test_the_dask_synopsis_grades_on_one_machine`.
+are run on this machine by :func:`run_dask_synopsis` (``HOST`` is 127.0.0.1, the port a
+free one) and checked by :func:`test_the_dask_synopsis_grades_on_one_machine`.
 
 The grader's and the hand-in's output never carries the kernel's "running over TCP" start-up
 warning (the grader's kernels use IPC and a silenced stderr; ``submit()`` filters the warning).
@@ -100,6 +101,7 @@ import sys
 import time
 import urllib.request
 import zipfile
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -253,6 +255,7 @@ class Ran:
     command: Command
     how: str
     output: str
+    seconds: float = 0.0  # wall clock, reported (``pytest -rP``), never asserted
 
 
 def _env(root: Path) -> dict[str, str]:
@@ -528,6 +531,7 @@ def run_printed(commands: list[Command], root: Path) -> list[Ran]:
     """Run ``commands`` in order in ``root``; fail on the first that does not work as printed."""
     ran = []
     for cmd in commands:
+        start = time.monotonic()
         assert not PLACEHOLDER.search(cmd.text), (
             f"{cmd}\nhas a placeholder: a synopsis belongs in a ```text block, a command in a "
             "```console/```sh block must run as printed (see tests/test_printed_commands.py)"
@@ -542,7 +546,8 @@ def run_printed(commands: list[Command], root: Path) -> list[Ran]:
             assert done.returncode == 0, f"{cmd}\nexit {done.returncode}:\n{output[-4000:]}"
         assert "Traceback (most recent call last)" not in output, f"{cmd}\n{output[-4000:]}"
         assert KERNEL_TCP_WARNING not in output, f"{cmd}\n{output[-4000:]}"
-        ran.append(Ran(cmd, how, output))
+        ran.append(Ran(cmd, how, output, time.monotonic() - start))
+        print(f"{ran[-1].seconds:6.1f} s  {cmd}  [{how}]")
     return ran
 
 
@@ -584,24 +589,44 @@ def test_the_student_editions_commands_work_as_printed(edition, edition_run):
     assert all(r.how for r in ran)
 
 
+def _user_copy(tmp_path_factory, name: str, files: list[Path], handed_in: Path) -> Path:
+    """A fresh scratch checkout with the user's files, as the documents name them."""
+    root = scratch_checkout(tmp_path_factory.mktemp(name), files, ROOT)
+    for user_file, text in USER_FILES.items():
+        (root / user_file).write_text(text, encoding="utf-8")
+    folder = root / SUBMISSIONS
+    folder.mkdir(parents=True)
+    # as Canvas's "Download Submissions" names the file: <name>_<user id>_<submission id>_<file>
+    shutil.copy2(handed_in, folder / f"lovelaceada_{CANVAS_USER}_67890_{handed_in.name}")
+    return root
+
+
 @pytest.fixture(scope="module")
-def repository_runs(edition, edition_run, tmp_path_factory):
-    """Each document's commands in a fresh scratch checkout with the user's files."""
+def all_runs(edition, edition_run, tmp_path_factory):
+    """Each document's commands in a fresh scratch checkout with the user's files, and the Dask
+    synopsis of site/grading.md (:func:`run_dask_synopsis`) in one more.
+
+    The copies are independent, so two run at a time, most commands first; within a copy the
+    commands run in the order printed."""
     handed_in = sorted((edition / "submissions").glob("hw*.ipynb"))[0]
     files = checkout_files()
-    runs = {}
+    jobs = []
     for doc in user_documents():
         rel = doc.relative_to(ROOT).as_posix()
         commands = harvest(doc.read_text(encoding="utf-8"), rel)
-        root = scratch_checkout(tmp_path_factory.mktemp(doc.stem.lower()), files, ROOT)
-        for name, text in USER_FILES.items():
-            (root / name).write_text(text, encoding="utf-8")
-        folder = root / SUBMISSIONS
-        folder.mkdir(parents=True)
-        # as Canvas's "Download Submissions" names the file: <name>_<user id>_<submission id>_<file>
-        shutil.copy2(handed_in, folder / f"lovelaceada_{CANVAS_USER}_67890_{handed_in.name}")
-        runs[rel] = (root, run_printed(commands, root))
-    return runs
+        root = _user_copy(tmp_path_factory, doc.stem.lower(), files, handed_in)
+        jobs.append((rel, root, len(commands), lambda c=commands, r=root: run_printed(c, r)))
+    root = _user_copy(tmp_path_factory, "dask", files, handed_in)
+    jobs.append(("dask", root, 3, lambda r=root: run_dask_synopsis(r)))
+    jobs.sort(key=lambda job: -job[2])
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        futures = {name: (root, pool.submit(run)) for name, root, _, run in jobs}
+    return {name: (root, future.result()) for name, (root, future) in sorted(futures.items())}
+
+
+@pytest.fixture(scope="module")
+def repository_runs(all_runs):
+    return {name: run for name, run in all_runs.items() if name != "dask"}
 
 
 def test_the_repositorys_documents_commands_work_as_printed(repository_runs):
@@ -630,12 +655,10 @@ def _free_port() -> int:
         return s.getsockname()[1]
 
 
-def test_the_dask_synopsis_grades_on_one_machine(repository_runs):
-    """site/grading.md's three Dask commands (a ```text synopsis: scheduler, worker, grader on
-    different machines) run here on one machine: ``HOST`` is 127.0.0.1 and the port a free
-    one (the scheduler is given ``--port``).  Each is run as printed otherwise, in the grading
-    page's scratch copy (its submissions folder), and every row must be graded."""
-    root, _ = repository_runs["site/grading.md"]
+def run_dask_synopsis(root: Path) -> str:
+    """site/grading.md's three Dask commands (a ```text synopsis: scheduler, worker and grader on
+    different machines) run on this machine: ``HOST`` is 127.0.0.1 and the port a free one
+    (the scheduler is given ``--port``); otherwise as printed, from the top of ``root``."""
     doc = (ROOT / "site" / "grading.md").read_text(encoding="utf-8")
     synopsis = [c for c in harvest(doc, "site/grading.md", ("text",), ()) if "dask" in c.text]
     kinds = ["dask scheduler", "dask worker", "--executor dask"]
@@ -650,10 +673,16 @@ def test_the_dask_synopsis_grades_on_one_machine(repository_runs):
             started.append(_serve(cmd, root, r"Registered to:|Scheduler at:", text=text)[0])
         text = grader.text.replace("tcp://HOST:8786", here)
         assert "HOST" not in text and here in text, text
-        output = _run(grader, text, root)
+        return _run(grader, text, root)
     finally:
         for proc in reversed(started):
             _stop(proc)
+
+
+def test_the_dask_synopsis_grades_on_one_machine(all_runs):
+    """Every row graded on the scheduler and workers the synopsis starts (without
+    ``PYTHONPATH=tools`` on the scheduler, every row says "grader error")."""
+    root, output = all_runs["dask"]
     assert "wrote " in output and "your-id:" in output, output[-3000:]
     assert "grader error" not in output and "Traceback" not in output, output[-3000:]
     with open(root / "grades" / "hw01" / "scores.csv", newline="", encoding="utf-8") as fh:
