@@ -37,8 +37,10 @@ runs as printed):
                                       answers its ``/lab`` URL and serves
                                       ``notebooks/00_welcome.ipynb``, then its process group is
                                       stopped (it serves until stopped, and opens a browser)
-``make present ...``                  ``make -n``: the exact recipe (a Voila server, until
-                                      stopped; ``tests/browser/test_lecture_deck.py`` serves it)
+``make present L=NN``                 started as printed (``PORT=`` a free port only if 8866 is
+                                      taken); the URL it prints once the deck is executed must
+                                      serve the lecture's deck without an error; then stopped
+``make present ...`` (other forms)    ``make -n``: the exact recipe
 ``make install``                      ``make -q install`` must report the install stamp up to
                                       date and ``make -n install`` must show nothing to run
                                       (never reinstalls)
@@ -507,9 +509,38 @@ def _serve_site(cmd: Command, root: Path) -> tuple[str, str]:
     return "started as printed on a stand-in build/site; http://127.0.0.1:8000 served; stopped", ""
 
 
+def _port_free(port: int) -> bool:
+    with socket.socket() as s:
+        try:
+            s.bind(("127.0.0.1", port))
+        except OSError:
+            return False
+        return True
+
+
+def _serve_present(cmd: Command, root: Path) -> tuple[str, str]:
+    """``make present L=NN`` as printed (``PORT=`` a free port only when its 8866 is taken):
+    once it prints its URL (after the pre-heated kernel executed the deck) the URL must serve
+    the lecture's deck without an error; then its process group is stopped."""
+    text = cmd.text if _port_free(8866) else f"{cmd.text} PORT={_free_port()}"
+    env = _env(root) | {"PYTHONUNBUFFERED": "1"}
+    proc, url, log = _serve(cmd, root, r"(?<=lecture mode: open )http://\S+", env=env, text=text)
+    try:
+        page = _get(url).decode("utf-8", errors="replace")
+        lecture = re.search(r"\bL=(\d+)", cmd.text)[1]
+        assert re.search(rf"<title>{lecture}_\w+</title>", page), page[:1000]
+        assert "Traceback" not in page and "error when executing" not in page, page[-3000:]
+        output = log.read_text(errors="replace")
+        assert "did not execute" not in output, output[-3000:]
+    finally:
+        _stop(proc)
+    return f"`{text}` started; its URL served the executed deck; stopped", ""
+
+
 #: commands not run as printed, and how they are run instead (the table of the docstring)
 EQUIVALENT = [
     (re.compile(r"^make\s+lab\b"), lambda c, r: _serve_lab(c, r)),
+    (re.compile(r"^make\s+present\s+L=\d+$"), _serve_present),
     (re.compile(r"^make\s+present\b"), lambda c, r: _make_n(c, r, "present")),
     (re.compile(r"^make\s+install\b"), lambda c, r: _make_n(c, r, "install")),
     (re.compile(r"^make\s+test\b"), lambda c, r: _make_n(c, r, "test")),
