@@ -26,7 +26,9 @@ is the copy, as its editable install would make it.  The user's own files are th
 the documents name them (:data:`USER_FILES`): a course roster ``roster.csv``, Canvas's
 gradebook export ``gradebook.csv`` as downloaded, and in ``path/to/submitted/notebooks/`` the
 file the student edition's own hand-in command wrote, named as Canvas's "Download Submissions"
-names it.  A command passes when it exits 0 and prints no traceback.
+names it.  A command passes when it exits 0 and prints no traceback.  The copies are
+independent, so two documents run at a time; each command's seconds are reported
+(``pytest -rP``), never asserted.
 
 A few commands cannot be run as printed in a test; each is run in a form that shows it would do
 what it says (one row per command in :data:`EQUIVALENT`; a harvested command matched by no row
