@@ -317,12 +317,23 @@ def _kill_kernel(client) -> None:
 class _Kernel:
     """One sandboxed kernel of one submission."""
 
-    def __init__(self, job: Path, opts: Options, deadline: float) -> None:
+    def __init__(
+        self,
+        job: Path,
+        opts: Options,
+        deadline: float,
+        hits: set[str] | None = None,
+        job_tmpfs: bool = False,
+    ) -> None:
         self.job = job
         self.opts = opts
         self.deadline = deadline
         self.client = None
         self.cgroup = None
+        #: the limits this submission's sandboxes met (sandbox.SandboxGroups.limits_reached,
+        #: sandbox.full_tmpfs), collected over its kernels; None: not counted (the preflight)
+        self.hits = hits
+        self.job_tmpfs = job_tmpfs
 
     def remaining(self) -> float:
         return self.deadline - time.monotonic()
@@ -330,7 +341,7 @@ class _Kernel:
     def start(self) -> None:
         from nbclient.exceptions import DeadKernelError
 
-        self.cgroup = sandbox.SandboxGroups(self.opts.limits)
+        self.cgroup = sandbox.SandboxGroups(self.opts.limits, job_tmpfs=self.job_tmpfs)
         client = _client_class()(
             nbformat.v4.new_notebook(),
             timeout=None,
@@ -393,11 +404,26 @@ class _Kernel:
             raise _CellFailed(f"the kernel died ({type(exc).__name__})") from None
         finally:
             client.nb.cells[index] = nbformat.v4.new_code_cell("")  # keep no outputs around
+            self._count_tmpfs()
         if client.flooded:
             raise _CellFailed(f"{client.flooded}; the kernel was stopped")
         return cell.get("outputs", [])
 
+    def _sandbox_pids(self) -> list[int]:
+        if self.cgroup is not None and self.cgroup.paths:
+            return self.cgroup.pids()
+        process = getattr(getattr(getattr(self.client, "km", None), "provisioner", None),
+                          "process", None)  # fmt: skip
+        return sandbox.descendants(process.pid) if process is not None else []
+
+    def _count_tmpfs(self) -> None:
+        """A full /tmp or /dev/shm, seen after each cell (the files may be gone at the end)."""
+        if self.hits is not None and self.opts.mode == "bwrap":
+            self.hits |= sandbox.full_tmpfs(self._sandbox_pids())
+
     def stop(self) -> None:
+        if self.hits is not None and self.cgroup is not None:
+            self.hits |= self.cgroup.limits_reached()  # before the groups are removed
         client, self.client = self.client, None
         if client is not None:
             _kill_kernel(client)
@@ -429,6 +455,7 @@ class _Session:
         self.attempts = 0
         self.responses = job  # where the probe writes its answers (grade_notebook sets it)
         self.mounted = False  # is the job folder a size-limited tmpfs (else checked per cell)
+        self.hits: set[str] = set()  # limits met by its sandboxes (counted by the sandbox)
 
     def ensure(self) -> _Kernel | None:
         """A kernel that has run every (non-skipped) student cell, or None."""
@@ -438,7 +465,7 @@ class _Session:
                 self.result.run_notes.append(self.broken)
                 break
             self.attempts += 1
-            kernel = _Kernel(self.job, self.opts, self.deadline)
+            kernel = _Kernel(self.job, self.opts, self.deadline, self.hits, self.mounted)
             k = -1
             try:
                 kernel.start()
@@ -635,6 +662,39 @@ def _note_disk(job: Path, mounted: bool, limit: int, result: Result) -> None:
         )
 
 
+def limit_flags(hits: set[str], limits: sandbox.Limits) -> list[tuple[str, str]]:
+    """``(status flag, feedback sentence)`` for every limit a submission's sandbox met."""
+    mb = 1 << 20
+    said = {
+        "processes": (
+            f"reached the process limit ({limits.processes})",
+            "starting more processes or threads failed in its code",
+        ),
+        "memory": (
+            f"reached the memory limit ({limits.memory_bytes // mb} MB)",
+            "files in /tmp and /dev/shm count as memory",
+        ),
+        "/tmp": (
+            f"reached the /tmp limit ({limits.tmp_bytes // mb} MB)",
+            "writes past it failed with 'No space left on device'",
+        ),
+        "/dev/shm": (
+            f"reached the /dev/shm limit ({limits.tmp_bytes // mb} MB)",
+            "writes past it failed with 'No space left on device'",
+        ),
+    }
+    return [(said[h][0], f"the sandbox {said[h][0]}: {said[h][1]}")
+            for h in ("processes", "memory", "/tmp", "/dev/shm") if h in hits]  # fmt: skip
+
+
+def _note_limits(hits: set[str], limits: sandbox.Limits, result: Result) -> None:
+    """One sentence and one status flag per limit the sandbox's own counters saw met, also
+    when the student's code caught the error (a refused fork, a full /tmp)."""
+    for flag, sentence in limit_flags(hits, limits):
+        result.run_notes.append(sentence)
+        result.status = f"{result.status}; {flag}"
+
+
 def _note_variant_mismatch(session, timeout: float, variant: str, result: Result) -> None:
     """Tell a student whose notebook used another variant code (or none) why answers fail."""
     try:
@@ -737,6 +797,7 @@ def grade_notebook(
             )
     finally:
         session.close()
+        _note_limits(session.hits, opts.limits, result)
         _note_disk(job, mounted, opts.limits.disk_bytes, result)
         jobroot.remove_job_folder(job, mounted)
     for q in questions:
