@@ -404,7 +404,7 @@ class _Kernel:
             raise _CellFailed(f"the kernel died ({type(exc).__name__})") from None
         finally:
             client.nb.cells[index] = nbformat.v4.new_code_cell("")  # keep no outputs around
-            self._count_tmpfs()
+            self._count_limits()
         if client.flooded:
             raise _CellFailed(f"{client.flooded}; the kernel was stopped")
         return cell.get("outputs", [])
@@ -416,10 +416,18 @@ class _Kernel:
                           "process", None)  # fmt: skip
         return sandbox.descendants(process.pid) if process is not None else []
 
-    def _count_tmpfs(self) -> None:
-        """A full /tmp or /dev/shm, seen after each cell (the files may be gone at the end)."""
-        if self.hits is not None and self.opts.mode == "bwrap":
-            self.hits |= sandbox.full_tmpfs(self._sandbox_pids())
+    def _count_limits(self) -> None:
+        """After each cell (the files may be gone, the process dead, by the end): a full /tmp
+        or /dev/shm, and an address space that came near ``--memory`` (a refused allocation,
+        caught or not, is counted nowhere by the kernel)."""
+        if self.hits is None:
+            return
+        pids = self._sandbox_pids()
+        if self.opts.mode == "bwrap":
+            self.hits |= sandbox.full_tmpfs(pids)
+        limit = self.opts.limits.memory_bytes
+        if sandbox.peak_address_space(pids) >= sandbox.NEAR_MEMORY_LIMIT * limit:
+            self.hits.add("memory")
 
     def stop(self) -> None:
         if self.hits is not None and self.cgroup is not None:
@@ -672,7 +680,7 @@ def limit_flags(hits: set[str], limits: sandbox.Limits) -> list[tuple[str, str]]
         ),
         "memory": (
             f"reached the memory limit ({limits.memory_bytes // mb} MB)",
-            "files in /tmp and /dev/shm count as memory",
+            "allocations past it fail (MemoryError); files in /tmp and /dev/shm count as memory",
         ),
         "/tmp": (
             f"reached the /tmp limit ({limits.tmp_bytes // mb} MB)",

@@ -497,6 +497,24 @@ def full_tmpfs(pids: list[int], mounts: tuple[str, ...] = TMPFS_MOUNTS) -> set[s
     return full
 
 
+#: a process whose address space came this close to ``--memory`` had allocations refused
+#: (``MemoryError``) or was about to: the kernel counts no refused allocation itself
+NEAR_MEMORY_LIMIT = 0.9
+
+
+def peak_address_space(pids: list[int]) -> int:
+    """The largest ``VmPeak`` (bytes) of ``pids``: the most address space any of them held."""
+    peak = 0
+    for pid in pids:
+        for line in _read(Path(f"/proc/{pid}/status")).splitlines():
+            if line.startswith("VmPeak:"):
+                parts = line.split()
+                if len(parts) >= 2 and parts[1].isdigit():
+                    peak = max(peak, int(parts[1]) * 1024)  # kB
+                break
+    return peak
+
+
 def descendants(root: int) -> list[int]:
     """``root`` and every process below it (by ``/proc/<pid>/stat``'s parent field)."""
     children: dict[int, list[int]] = {}
