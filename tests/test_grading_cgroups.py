@@ -132,6 +132,8 @@ def test_v2_groups_get_the_v2_files(tmp_path):
                               "cpu.max": "100000 100000", "memory.max": str(memory)}  # fmt: skip
     assert (own / "cgroup.subtree_control").read_text().startswith("+")  # enabled for children
     assert sandbox.run_groups(layout) == {str(path)}
+    (own / "course-grader-1-0badf00d-123456789abc").mkdir()  # another grader's, same host
+    assert sandbox.run_groups(layout) == {str(path)}
     assert groups.procs_files == [str(path / "cgroup.procs")]
 
 
