@@ -236,3 +236,17 @@ def test_a_python_outside_usr_and_the_course_is_bound_with_the_links_to_it(tmp_p
     assert (str(real), str(home / "miniconda3")) in links
     assert str(ROOT / "course_lib") in binds and str(ROOT) not in binds
     assert not any(b.startswith(str(tmp_path)) and b != str(prefix) for b in binds), binds
+
+
+def test_library_folders_are_read_from_the_maps_of_a_process():
+    maps = (
+        "7f1d7bc00000-7f1d7bc9a000 r--p 00000000 fe:00 123 /opt/py/lib/libpython3.11.so.1.0\n"
+        "7f1d7ba1e000-7f1d7ba46000 r--p 00000000 fe:00 124 /usr/lib/x86_64-linux-gnu/libc.so.6\n"
+        "7f1d7ba00000-7f1d7ba10000 r-xp 00000000 fe:00 125 /lib/x86_64-linux-gnu/libm.so.6\n"
+        "7f1d7b000000-7f1d7b100000 r--p 00000000 fe:00 126 /nix/store/abc-zlib/lib/libz.so\n"
+        "7f1d7a000000-7f1d7a100000 rw-s 00000000 00:01 127 /dev/shm/x.so (deleted)\n"
+        "7f1d79000000-7f1d79100000 r--p 00000000 fe:00 128 /opt/py/lib/python3.11/os.py\n"
+        "7ffd3c5f4000-7ffd3c615000 rw-p 00000000 00:00 0 [stack]\n"
+        "7f1d78000000-7f1d78100000 rw-p 00000000 00:00 0\n"
+    )
+    assert sandbox.library_folders(maps) == [Path("/nix/store/abc-zlib/lib"), Path("/opt/py/lib")]

@@ -7,7 +7,10 @@
   past the bound fails inside the folder, nothing is left afterwards;
 * ``--disk`` means what it says: code in the sandbox writes one file up to close to it (no
   second, lower limit: the file-size limit was a fixed 64 MB, so ``--disk 128`` stopped at 64),
-  and not beyond.
+  and not beyond;
+* the preflight passes with the course's environment wherever it is: a venv reached through a
+  link, and a conda-like prefix (no venv, outside ``/usr`` and the course, under an ``/opt``-like
+  folder reached from ``$HOME`` by a link) whose ``python`` loads ``libpython`` from outside it.
 """
 
 from __future__ import annotations
@@ -180,3 +183,52 @@ def test_a_job_writes_close_to_the_disk_limit_and_not_beyond(tmp_path):
     assert stopped[0] == "stopped" and stopped[2] == "28", proc.stdout  # ENOSPC, not EFBIG (27)
     assert disk - (2 << 20) <= used <= disk, used
     print(f"--disk {disk >> 20} MB: {used / (1 << 20):.1f} MB written before 'No space left'")
+
+
+@needs_sandbox
+@pytest.mark.timeout(300)
+def test_preflight_passes_with_a_conda_like_prefix_outside_usr_and_the_course(tmp_path):
+    """A conda-like environment -- one prefix holding Python and the packages, no venv on top
+    (``sys.prefix == sys.base_prefix``), under ``/opt``-like and reached from ``$HOME``
+    through a link -- made here of hard links to this Python and this environment's packages.
+    Its ``python`` still loads ``libpython`` through the ``RUNPATH`` it was built with (outside
+    the prefix): the sandbox must show that folder too."""
+    import subprocess
+    import sys
+
+    base = Path(sys.base_prefix).resolve()
+    site = Path(next(p for p in sys.path if p.endswith("site-packages"))).resolve()
+    if base == Path("/usr") or Path("/usr") in base.parents:
+        pytest.skip(f"this Python is the system's ({base}): no prefix outside /usr to copy")
+    if (
+        os.stat(base).st_dev != os.stat(tmp_path).st_dev
+        or os.stat(site).st_dev != os.stat(tmp_path).st_dev
+    ):
+        pytest.skip("the environment is on another file system than the temp folder (no links)")
+    real = tmp_path / "opt" / "conda"
+    prefix = real / "envs" / "course"
+    prefix.parent.mkdir(parents=True)
+    subprocess.run(["cp", "-al", str(base), str(prefix)], check=True, timeout=120)
+    version = f"python{sys.version_info.major}.{sys.version_info.minor}"
+    packages = prefix / "lib" / version / "site-packages"
+    subprocess.run(["rm", "-rf", str(packages)], check=True, timeout=60)
+    subprocess.run(["cp", "-al", str(site), str(packages)], check=True, timeout=120)
+    home = tmp_path / "home"
+    home.mkdir()
+    os.symlink(real, home / "miniconda3")
+    seen = home / "miniconda3" / "envs" / "course"
+    script = (
+        "import sys\n"
+        "from _homework_support import load\n"
+        f"grade = load('g', {str(ROOT / 'tools' / 'grade.py')!r})\n"
+        "assert sys.prefix == sys.base_prefix == sys.argv[1], (sys.prefix, sys.base_prefix)\n"
+        "print('PROBLEM:' + grade.check_sandbox(grade.Options(mode='bwrap')))\n"
+    )
+    env = {**os.environ, "PYTHONPATH": f"{ROOT}{os.pathsep}{ROOT / 'tests'}"}
+    env.pop("VIRTUAL_ENV", None)
+    proc = subprocess.run(
+        [str(seen / "bin" / version), "-c", script, str(seen)],
+        capture_output=True, text=True, timeout=170, env=env, cwd=str(ROOT),
+    )  # fmt: skip
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    assert "PROBLEM:\n" in proc.stdout, proc.stdout

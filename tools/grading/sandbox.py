@@ -110,6 +110,10 @@ def _visible_paths() -> list[Path]:
     wanted.add(root / "course_lib")
     venv = Path(sys.prefix).resolve()
     wanted.add(venv)
+    for lib in library_folders(_read(Path("/proc/self/maps"))):
+        if lib == temp or lib in temp.parents or lib == root or root in lib.parents:
+            continue  # never the temp folder whole (job roots) nor the checkout
+        wanted.add(lib)
     # drop paths inside other listed paths; never the course root itself
     out = sorted(wanted)
     kept: list[Path] = []
@@ -120,6 +124,36 @@ def _visible_paths() -> list[Path]:
             continue  # /usr is bound whole
         kept.append(p)
     return kept
+
+
+_SYSTEM_TOPS = frozenset(
+    {"usr", "lib", "lib32", "lib64", "libx32", "bin", "sbin", "proc", "sys", "dev", "etc"}
+)
+
+
+def library_folders(maps: str) -> list[Path]:
+    """The folders of the shared libraries mapped into a process (``/proc/<pid>/maps``'s text).
+
+    The grader's Python may load libraries from outside its prefix: a ``RUNPATH`` fixed at
+    build time (a relocated or hard-linked environment still loads ``libpython`` from where it
+    was built), a conda or Nix store beside it.  The kernel in the sandbox needs them too.
+    """
+    found: set[Path] = set()
+    for line in maps.splitlines():
+        parts = line.split(None, 5)
+        if len(parts) < 6:
+            continue
+        path = parts[5].strip()
+        name = path.rsplit("/", 1)[-1]
+        if not path.startswith("/") or path.endswith(" (deleted)"):
+            continue
+        if not (name.endswith(".so") or ".so." in name):
+            continue
+        folder = Path(os.path.normpath(path)).parent
+        if folder.parts[1:2] and folder.parts[1] in _SYSTEM_TOPS:
+            continue  # bound whole (bwrap_argv), or not libraries
+        found.add(folder)
+    return sorted(found)
 
 
 _ETC = [
