@@ -55,11 +55,13 @@ def _v1_tree(base: Path) -> dict[str, Path]:
     return {"pids": pids, "memory": memory, "cpu": base / "cpu,cpuacct", "_cpu": cpu}
 
 
-def _v2_tree(base: Path, enabled: str = "") -> Path:
+def _v2_tree(base: Path, enabled: str = "", above: str = "") -> Path:
+    """The grader in ``user.slice/grader.scope``; ``enabled``: its own ``subtree_control``,
+    ``above``: that of the slice and of the root."""
     _files(base, **{"cgroup.controllers": "cpuset cpu io memory hugetlb pids rdma misc",
-                    "cgroup.subtree_control": "cpu memory pids", "cgroup.procs": ""})  # fmt: skip
+                    "cgroup.subtree_control": above, "cgroup.procs": ""})  # fmt: skip
     _files(base / "user.slice", **{"cgroup.controllers": "cpu memory pids",
-                                   "cgroup.subtree_control": "cpu memory pids"})  # fmt: skip
+                                   "cgroup.subtree_control": above})  # fmt: skip
     return _files(
         base / "user.slice" / "grader.scope",
         **{"cgroup.controllers": "cpu memory pids", "cgroup.subtree_control": enabled,
@@ -75,7 +77,7 @@ def test_v1_is_chosen_when_controllers_have_their_own_hierarchies(tmp_path):
     assert layout.enable == ()
 
 
-@pytest.mark.parametrize("enabled", ["", "memory", "cpu memory pids"])
+@pytest.mark.parametrize("enabled", ["memory", "cpu memory pids"])
 def test_v2_is_chosen_when_the_root_is_the_unified_hierarchy(tmp_path, enabled):
     own = _v2_tree(tmp_path, enabled)
     layout = sandbox.cgroup_layout(tmp_path, V2_SELF)
@@ -84,11 +86,35 @@ def test_v2_is_chosen_when_the_root_is_the_unified_hierarchy(tmp_path, enabled):
     assert layout.enable == tuple(c for c in ("pids", "cpu", "memory") if c not in enabled)
 
 
+def test_v2_a_scope_with_processes_uses_the_nearest_slice_that_enables_controllers(tmp_path):
+    """systemd: the grader's session scope holds processes and enables nothing for children;
+    its slice has ``pids`` and ``memory`` on for its children: the sandboxes go there."""
+    _v2_tree(tmp_path, enabled="", above="cpu memory pids")
+    (tmp_path / "user.slice" / "cgroup.subtree_control").write_text("memory pids\n")
+    layout = sandbox.cgroup_layout(tmp_path, V2_SELF)
+    slice_ = tmp_path / "user.slice"
+    assert layout == sandbox.CgroupLayout(2, {"pids": slice_, "memory": slice_})
+    (slice_ / "cgroup.subtree_control").write_text("")  # nothing on anywhere below the root
+    (tmp_path / "cgroup.subtree_control").write_text("")
+    layout = sandbox.cgroup_layout(tmp_path, V2_SELF)
+    own = slice_ / "grader.scope"
+    assert layout.own == {"pids": own, "cpu": own, "memory": own}  # to enable (may fail)
+    assert layout.enable == ("pids", "cpu", "memory")
+
+
+def test_v2_the_root_group_enables_its_controllers_itself(tmp_path):
+    _v2_tree(tmp_path)
+    (tmp_path / "cgroup.subtree_control").write_text("")
+    layout = sandbox.cgroup_layout(tmp_path, "0::/\n")
+    assert layout.own == dict.fromkeys(("pids", "cpu", "memory"), tmp_path)
+    assert layout.enable == ("pids", "cpu", "memory")
+
+
 def test_v2_uses_only_the_controllers_its_own_group_offers(tmp_path):
-    own = _v2_tree(tmp_path)
+    own = _v2_tree(tmp_path, enabled="memory")
     (own / "cgroup.controllers").write_text("memory\n")
     layout = sandbox.cgroup_layout(tmp_path, V2_SELF)
-    assert layout.own == {"memory": own} and layout.enable == ("memory",)
+    assert layout.own == {"memory": own} and layout.enable == ()
 
 
 @pytest.mark.parametrize("case", ["nothing mounted", "v2 without own line", "v2 no controllers"])

@@ -10,9 +10,13 @@ One sandbox per submission (per kernel).  What the student's kernel sees:
 * no network (its own network namespace), its own PID and IPC namespaces (it cannot see or
   signal the grader, other kernels or their files), ``--die-with-parent`` so nothing it starts
   survives the kernel, ``--new-session`` and no capabilities;
-* limits set before exec: address space (``--memory``, default 4 GiB), CPU time, file size,
-  no core dumps, and the number of processes (a ``pids`` cgroup when the grader runs as root and
-  can create one, ``RLIMIT_NPROC`` otherwise).
+* limits set before exec: address space (``--memory``, default 4 GiB), CPU time, file size
+  (the job folder's limit, ``--disk``), no core dumps, and the number of processes (a ``pids``
+  cgroup when the grader runs as root and can create one, ``RLIMIT_NPROC`` otherwise);
+* which limits a sandbox met is read from its own counters (``pids.events``,
+  ``memory.failcnt`` / ``memory.events``, the free space of its ``/tmp`` and ``/dev/shm``, the
+  peak address space of its processes), so a limit is named also when the student's code
+  caught the error.
 
 ``mode`` is ``"bwrap"`` (sandboxed) or ``"none"`` (the kernel runs with the grader's rights:
 only for machines without bubblewrap, e.g. macOS; the grader says so everywhere).  The limits
@@ -285,10 +289,12 @@ class CgroupLayout:
 
     ``version``: 1 (one hierarchy per controller, ``pids.max``, ``memory.limit_in_bytes``,
     ``cpu.shares``), 2 (the unified hierarchy: ``cgroup.controllers``, ``memory.max``,
-    ``cpu.weight``) or 0 (none usable).  ``own``: controller -> the grader's own group, where
-    a sandbox's group is made.  ``enable``: (v2) controllers the own group offers
-    (``cgroup.controllers``) but has not yet enabled for its children
-    (``cgroup.subtree_control``).
+    ``cpu.weight``) or 0 (none usable).  ``own``: controller -> the group in which a
+    sandbox's group is made: the grader's own, or (v2) when that one enables no controller for
+    children and is not the root, the nearest ancestor that does (v2 puts a process in one
+    group only: every controller then has the same folder).  ``enable``: (v2) controllers the
+    own group offers (``cgroup.controllers``) but has not yet enabled for its children
+    (``cgroup.subtree_control``); enabling fails where the group holds processes.
     """
 
     version: int
@@ -316,6 +322,16 @@ def cgroup_layout(base: Path, self_cgroup: str) -> CgroupLayout:
         offered = _read(own / "cgroup.controllers").split()
         enabled = _read(own / "cgroup.subtree_control").split()
         usable = [c for c in CONTROLLERS if c in offered or c in enabled]
+        if usable and own != base and not set(enabled) & set(CONTROLLERS):
+            # A group holding processes (the grader's session scope) cannot enable controllers
+            # for children ("no internal processes"); the nearest ancestor that has them on
+            # for its children (a systemd slice) takes the sandboxes' groups instead.
+            for parent in own.parents:
+                on = [c for c in CONTROLLERS if c in _read(parent / "cgroup.subtree_control")]
+                if on:
+                    return CgroupLayout(2, dict.fromkeys(on, parent))
+                if parent == base:
+                    break
         return CgroupLayout(
             2 if usable else 0,
             dict.fromkeys(usable, own),
@@ -382,7 +398,9 @@ def _count(path: Path) -> int:
 
 
 class SandboxGroups:
-    """Control groups of one sandbox (root only), nested in the grader's own groups.
+    """Control groups of one sandbox (root only), nested in the grader's own groups (cgroup
+    v2: or in the nearest ancestor that enables the controllers, :class:`CgroupLayout`), named
+    ``RUN_PREFIX-<job>``.
 
     ``pids``: at most ``limits.processes`` processes; ``cpu``: the share of any other sandbox
     (``cpu.shares``/``cpu.weight``) and at most one core, whatever number of processes it
