@@ -425,6 +425,8 @@ class _Kernel:
         pids = self._sandbox_pids()
         if self.opts.mode == "bwrap":
             self.hits |= sandbox.full_tmpfs(pids)
+        if self.job_tmpfs and _job_full(self.job):
+            self.hits.add("disk")
         limit = self.opts.limits.memory_bytes
         if sandbox.peak_address_space(pids) >= sandbox.NEAR_MEMORY_LIMIT * limit:
             self.hits.add("memory")
@@ -653,12 +655,21 @@ def _error_text(outputs) -> str | None:
     return None
 
 
-def _note_disk(job: Path, mounted: bool, limit: int, result: Result) -> None:
-    """Say so when the submission filled its job folder (its own writes failed, nobody else's)."""
+def _job_full(job: Path) -> bool:
+    """Is a tmpfs job folder full (less than 1 MB left)?"""
+    try:
+        sv = os.statvfs(job)
+    except OSError:
+        return False
+    return sv.f_bavail * sv.f_frsize < (1 << 20)
+
+
+def _note_disk(job: Path, mounted: bool, limit: int, result: Result, hits: set[str]) -> None:
+    """Say so when the submission filled its job folder (its own writes failed, nobody else's):
+    full now, or full after one of its cells (``hits``: the files may have been removed)."""
     try:
         if mounted:
-            sv = os.statvfs(job)
-            full = sv.f_bavail * sv.f_frsize < (1 << 20)
+            full = "disk" in hits or _job_full(job)
         else:
             full = jobroot.used_bytes(job, stop_at=limit) > limit
     except OSError:
@@ -668,6 +679,7 @@ def _note_disk(job: Path, mounted: bool, limit: int, result: Result) -> None:
             f"the job folder reached the disk limit of {limit >> 20} MB "
             "(writes past it failed with 'No space left on device')"
         )
+        result.status = f"{result.status}; reached the disk limit ({limit >> 20} MB)"
 
 
 def limit_flags(hits: set[str], limits: sandbox.Limits) -> list[tuple[str, str]]:
@@ -806,7 +818,7 @@ def grade_notebook(
     finally:
         session.close()
         _note_limits(session.hits, opts.limits, result)
-        _note_disk(job, mounted, opts.limits.disk_bytes, result)
+        _note_disk(job, mounted, opts.limits.disk_bytes, result, session.hits)
         jobroot.remove_job_folder(job, mounted)
     for q in questions:
         if result.fractions.get(q, 0.0) < 1.0 and not result.notes[q]:
