@@ -161,8 +161,8 @@ def test_no_process_outlives_the_grader(batch):
 
 
 def _cgroups() -> set[str]:
-    base = Path("/sys/fs/cgroup/pids")
-    return {p.name for p in base.glob("course-grader-*")} if base.is_dir() else set()
+    """This run's sandbox groups (another grader on the host has its own prefix)."""
+    return grade.sandbox.run_groups()
 
 
 def test_names_are_unique_and_duplicates_flagged(batch):

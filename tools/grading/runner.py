@@ -319,12 +319,23 @@ def _kill_kernel(client) -> None:
 class _Kernel:
     """One sandboxed kernel of one submission."""
 
-    def __init__(self, job: Path, opts: Options, deadline: float) -> None:
+    def __init__(
+        self,
+        job: Path,
+        opts: Options,
+        deadline: float,
+        hits: set[str] | None = None,
+        job_tmpfs: bool = False,
+    ) -> None:
         self.job = job
         self.opts = opts
         self.deadline = deadline
         self.client = None
         self.cgroup = None
+        #: the limits this submission's sandboxes met (sandbox.SandboxGroups.limits_reached,
+        #: sandbox.full_tmpfs), collected over its kernels; None: not counted (the preflight)
+        self.hits = hits
+        self.job_tmpfs = job_tmpfs
 
     def remaining(self) -> float:
         return self.deadline - time.monotonic()
@@ -332,7 +343,7 @@ class _Kernel:
     def start(self) -> None:
         from nbclient.exceptions import DeadKernelError
 
-        self.cgroup = sandbox.SandboxGroups(self.opts.limits)
+        self.cgroup = sandbox.SandboxGroups(self.opts.limits, job_tmpfs=self.job_tmpfs)
         client = _client_class()(
             nbformat.v4.new_notebook(),
             timeout=None,
@@ -395,11 +406,36 @@ class _Kernel:
             raise _CellFailed(f"the kernel died ({type(exc).__name__})") from None
         finally:
             client.nb.cells[index] = nbformat.v4.new_code_cell("")  # keep no outputs around
+            self._count_limits()
         if client.flooded:
             raise _CellFailed(f"{client.flooded}; the kernel was stopped")
         return cell.get("outputs", [])
 
+    def _sandbox_pids(self) -> list[int]:
+        if self.cgroup is not None and self.cgroup.paths:
+            return self.cgroup.pids()
+        process = getattr(getattr(getattr(self.client, "km", None), "provisioner", None),
+                          "process", None)  # fmt: skip
+        return sandbox.descendants(process.pid) if process is not None else []
+
+    def _count_limits(self) -> None:
+        """After each cell (the files may be gone, the process dead, by the end): a full /tmp
+        or /dev/shm, and an address space that came near ``--memory`` (a refused allocation,
+        caught or not, is counted nowhere by the kernel)."""
+        if self.hits is None:
+            return
+        pids = self._sandbox_pids()
+        if self.opts.mode == "bwrap":
+            self.hits |= sandbox.full_tmpfs(pids)
+        if self.job_tmpfs and _job_full(self.job):
+            self.hits.add("disk")
+        limit = self.opts.limits.memory_bytes
+        if sandbox.peak_address_space(pids) >= sandbox.NEAR_MEMORY_LIMIT * limit:
+            self.hits.add("memory")
+
     def stop(self) -> None:
+        if self.hits is not None and self.cgroup is not None:
+            self.hits |= self.cgroup.limits_reached()  # before the groups are removed
         client, self.client = self.client, None
         if client is not None:
             _kill_kernel(client)
@@ -431,6 +467,7 @@ class _Session:
         self.attempts = 0
         self.responses = job  # where the probe writes its answers (grade_notebook sets it)
         self.mounted = False  # is the job folder a size-limited tmpfs (else checked per cell)
+        self.hits: set[str] = set()  # limits met by its sandboxes (counted by the sandbox)
 
     def ensure(self) -> _Kernel | None:
         """A kernel that has run every (non-skipped) student cell, or None."""
@@ -440,7 +477,7 @@ class _Session:
                 self.result.run_notes.append(self.broken)
                 break
             self.attempts += 1
-            kernel = _Kernel(self.job, self.opts, self.deadline)
+            kernel = _Kernel(self.job, self.opts, self.deadline, self.hits, self.mounted)
             k = -1
             try:
                 kernel.start()
@@ -620,12 +657,21 @@ def _error_text(outputs) -> str | None:
     return None
 
 
-def _note_disk(job: Path, mounted: bool, limit: int, result: Result) -> None:
-    """Say so when the submission filled its job folder (its own writes failed, nobody else's)."""
+def _job_full(job: Path) -> bool:
+    """Is a tmpfs job folder full (less than 1 MB left)?"""
+    try:
+        sv = os.statvfs(job)
+    except OSError:
+        return False
+    return sv.f_bavail * sv.f_frsize < (1 << 20)
+
+
+def _note_disk(job: Path, mounted: bool, limit: int, result: Result, hits: set[str]) -> None:
+    """Say so when the submission filled its job folder (its own writes failed, nobody else's):
+    full now, or full after one of its cells (``hits``: the files may have been removed)."""
     try:
         if mounted:
-            sv = os.statvfs(job)
-            full = sv.f_bavail * sv.f_frsize < (1 << 20)
+            full = "disk" in hits or _job_full(job)
         else:
             full = jobroot.used_bytes(job, stop_at=limit) > limit
     except OSError:
@@ -635,6 +681,40 @@ def _note_disk(job: Path, mounted: bool, limit: int, result: Result) -> None:
             f"the job folder reached the disk limit of {limit >> 20} MB "
             "(writes past it failed with 'No space left on device')"
         )
+        result.status = f"{result.status}; reached the disk limit ({limit >> 20} MB)"
+
+
+def limit_flags(hits: set[str], limits: sandbox.Limits) -> list[tuple[str, str]]:
+    """``(status flag, feedback sentence)`` for every limit a submission's sandbox met."""
+    mb = 1 << 20
+    said = {
+        "processes": (
+            f"reached the process limit ({limits.processes})",
+            "starting more processes or threads failed in its code",
+        ),
+        "memory": (
+            f"reached the memory limit ({limits.memory_bytes // mb} MB)",
+            "allocations past it fail (MemoryError); files in /tmp and /dev/shm count as memory",
+        ),
+        "/tmp": (
+            f"reached the /tmp limit ({limits.tmp_bytes // mb} MB)",
+            "writes past it failed with 'No space left on device'",
+        ),
+        "/dev/shm": (
+            f"reached the /dev/shm limit ({limits.tmp_bytes // mb} MB)",
+            "writes past it failed with 'No space left on device'",
+        ),
+    }
+    return [(said[h][0], f"the sandbox {said[h][0]}: {said[h][1]}")
+            for h in ("processes", "memory", "/tmp", "/dev/shm") if h in hits]  # fmt: skip
+
+
+def _note_limits(hits: set[str], limits: sandbox.Limits, result: Result) -> None:
+    """One sentence and one status flag per limit the sandbox's own counters saw met, also
+    when the student's code caught the error (a refused fork, a full /tmp)."""
+    for flag, sentence in limit_flags(hits, limits):
+        result.run_notes.append(sentence)
+        result.status = f"{result.status}; {flag}"
 
 
 def _note_variant_mismatch(session, timeout: float, variant: str, result: Result) -> None:
@@ -739,7 +819,8 @@ def grade_notebook(
             )
     finally:
         session.close()
-        _note_disk(job, mounted, opts.limits.disk_bytes, result)
+        _note_limits(session.hits, opts.limits, result)
+        _note_disk(job, mounted, opts.limits.disk_bytes, result, session.hits)
         jobroot.remove_job_folder(job, mounted)
     for q in questions:
         if result.fractions.get(q, 0.0) < 1.0 and not result.notes[q]:
