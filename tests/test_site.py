@@ -41,7 +41,7 @@ from _homework_support import load
 
 ROOT = Path(__file__).resolve().parents[1]
 ARTIFACTS = ROOT / "test-artifacts" / "site"
-LECTURE = "01_reparametrization"  # the lecture page screenshot in the browser
+LECTURE = "01_parametric_continuity"  # the lecture page screenshot in the browser
 # the pages opened in the browser (3 s each): name -> path in the site.  Every page is
 # checked for raw TeX without a browser (test_no_raw_tex_on_any_page).
 PAGES = {"index": "index.html", "course": "course.html", LECTURE: f"lectures/{LECTURE}.html"}

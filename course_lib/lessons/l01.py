@@ -8,13 +8,14 @@ defined and documented in the module it is imported from.
 from __future__ import annotations
 
 from .. import PiecewiseBezier
-from ..checks.lectures import check_number, quiz
+from ..checks.lectures import check_number, check_vector, quiz
 from ..differential_geometry import speed, unit_tangent
 from ..plotting.lecture_figures import deformation_figure, example1_figure, joint_figure
 
 __all__ = [
     "PiecewiseBezier",
     "check_number",
+    "check_vector",
     "deformation_figure",
     "example1_figure",
     "joint_figure",

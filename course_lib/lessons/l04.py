@@ -8,7 +8,7 @@ defined and documented in the module it is imported from.
 from __future__ import annotations
 
 from .. import PiecewiseBezier
-from ..checks.lectures import check_number, quiz
+from ..checks.lectures import check_number, check_vector, quiz
 from ..continuity import curve_continuity
 from ..differential_geometry import arc_length_derivatives
 from ..plotting import new_figure, plot_curvature_comb, plot_curvature_profile, plot_curve
@@ -20,6 +20,7 @@ __all__ = [
     "PiecewiseBezier",
     "arc_length_derivatives",
     "check_number",
+    "check_vector",
     "combs_figure",
     "curve_continuity",
     "g2_stitch",
