@@ -102,6 +102,8 @@ def farin_boehm_figure(q_poly, stitched, fb, beta1: float):
     """Lecture 05, ``nb05-028`` (Fig. 8): the Farin–Boehm construction with its lengths."""
     fig, ax = new_figure(figsize=(8.6, 4.4))
     plot_farin_boehm(ax, q_poly, stitched.segments[1], fb.T, beta1, fb.gamma, lengths=True)
+    ax.set_aspect("equal", adjustable="box")
+    ax.set(xlim=(-0.7, 9.8), ylim=(-1.6, 3.2))  # room for the labels of V_0, W_3 and the title
     ax.set_title("Farin–Boehm: G2 stitching, β₁ = 1, β₂ = 1")
     return fig
 
