@@ -169,7 +169,7 @@ def test_find_lecture_names_the_lectures_on_a_bad_choice():
 
 def test_voila_runs_the_deck_template_preheated_and_offline():
     present = _present()
-    cmd = " ".join(present.voila_command(Path("/x/05_stitching_bezier_curves.ipynb"), 8866))
+    cmd = " ".join(present.voila_command(Path("/x/07_stitching_bezier_curves.ipynb"), 8866))
     assert "--template=course-deck" in cmd and "--preheat_kernel=True" in cmd
     assert "--Voila.ip=127.0.0.1" in cmd
     env = present.voila_env({})
