@@ -20,21 +20,19 @@ from __future__ import annotations
 import csv
 import hashlib
 import os
-import sys
 from pathlib import Path
 
 import nbformat
 import pytest
 from _homework_support import load
 
+from tools import grade
+
 ROOT = Path(__file__).resolve().parents[1]
 HIDDEN = ROOT / "solutions" / "hidden_tests" / "hw01.py"
 SOLUTION = ROOT / "solutions" / "hw01_reparametrization.ipynb"
 
-sys.path.insert(0, str(ROOT / "tests" / "fixtures" / "redteam"))
-import hostile_files  # noqa: E402
-
-grade = load("grade_hostile", ROOT / "tools" / "grade.py")
+hostile_files = load("hostile_files", ROOT / "tests" / "fixtures" / "redteam" / "hostile_files.py")
 safe_names = grade.safe_names
 
 ok, why = grade.sandbox.bwrap_works()

@@ -22,7 +22,6 @@ from __future__ import annotations
 import csv
 import hashlib
 import os
-import sys
 import tempfile
 from pathlib import Path
 
@@ -30,14 +29,13 @@ import nbformat
 import pytest
 from _homework_support import load
 
+from tools import grade
+
 ROOT = Path(__file__).resolve().parents[1]
 HIDDEN = ROOT / "solutions" / "hidden_tests" / "hw01.py"
 SOLUTION = ROOT / "solutions" / "hw01_reparametrization.ipynb"
 
-sys.path.insert(0, str(ROOT / "tests" / "fixtures" / "redteam"))
-import cheats  # noqa: E402
-
-grade = load("grade_rt", ROOT / "tools" / "grade.py")
+cheats = load("cheats", ROOT / "tests" / "fixtures" / "redteam" / "cheats.py")
 
 ok, why = grade.sandbox.bwrap_works()
 pytestmark = [

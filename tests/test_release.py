@@ -20,10 +20,10 @@ import zipfile
 from pathlib import Path
 
 import pytest
-from _homework_support import load
+
+from tools import release
 
 ROOT = Path(__file__).resolve().parents[1]
-release = load("release", ROOT / "tools" / "release.py")
 
 
 @pytest.fixture(scope="module")

@@ -91,10 +91,9 @@ from concurrent.futures import ThreadPoolExecutor, as_completed
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-
-from grading import identity, intake, jobroot, reports, safe_names, sandbox
-from grading.runner import (
+from course_lib import variants
+from tools.grading import identity, intake, jobroot, reports, safe_names, sandbox
+from tools.grading.runner import (
     DEFAULT_CELL_TIMEOUT,
     DEFAULT_QUESTION_TIMEOUT,
     DEFAULT_TIME_LIMIT,
@@ -106,8 +105,6 @@ from grading.runner import (
     grade_notebook,
     grade_payload,
 )
-
-from course_lib import variants
 
 __all__ = [
     "HiddenTests",
