@@ -196,12 +196,6 @@ class JointReport:
         )
 
 
-def _cross_norm(x: np.ndarray, y: np.ndarray) -> float:
-    if x.size == 2:
-        return abs(float(x[0] * y[1] - x[1] * y[0]))
-    return float(np.linalg.norm(np.cross(x, y)))
-
-
 def _end_derivs(c, at: float, n: int) -> np.ndarray:
     return np.stack([np.asarray(c.evaluate(at, k), dtype=float) for k in range(n + 1)])
 
@@ -209,11 +203,6 @@ def _end_derivs(c, at: float, n: int) -> np.ndarray:
 def _norms(x: np.ndarray) -> np.ndarray:
     """Plain norms: used on joints already scaled to a unit length scale (see _reports)."""
     return np.sqrt(np.einsum("...d,...d->...", x, x))
-
-
-def _leading(ok: np.ndarray) -> np.ndarray:
-    """Number of leading True rows per column of ``ok`` (shape (n, J))."""
-    return np.argmin(np.vstack([ok, np.zeros((1, ok.shape[1]), bool)]), axis=0)
 
 
 def _solve_betas(Q: np.ndarray, R: np.ndarray):

@@ -142,7 +142,7 @@ def test_victims_keep_full_marks_and_their_own_feedback(batch):
         assert float(batch["rows"][name]["total"]) == tests.max_points
         full = grade.Result(name, dict(tests.points), dict.fromkeys(tests.points, ""),
                             fractions=dict.fromkeys(tests.points, 1.0))  # fmt: skip
-        assert _feedback(batch, name) == grade.feedback_markdown(full, tests)
+        assert _feedback(batch, name) == grade.reports.feedback_markdown(full, tests)
 
 
 @pytest.mark.parametrize("attack", sorted(hostile_files.ATTACKS))

@@ -144,7 +144,7 @@ def test_correct_submissions_keep_full_marks_and_identical_feedback(batch):
                             fractions=dict.fromkeys(tests.points, 1.0))
         code = grade.variants.code_for(SECRET, "hw01", name)
         full.run_notes.append(f"graded on the student's own data (variant {code})")
-        assert text == grade.feedback_markdown(full, tests)
+        assert text == grade.reports.feedback_markdown(full, tests)
 
 
 def test_nothing_outside_the_sandbox_changed(batch):

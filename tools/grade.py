@@ -110,7 +110,6 @@ __all__ = [
     "HiddenTests",
     "Result",
     "discover",
-    "feedback_markdown",
     "feedback_names",
     "grade_notebook",
     "main",
@@ -218,10 +217,6 @@ def discover(folder: Path) -> list[tuple[str, Path, list[Path]]]:
 def feedback_names(students: list[str]) -> dict[str, str]:
     """A distinct, filesystem-safe file stem per student (distinct even case-insensitively)."""
     return safe_names.file_stems(students)
-
-
-def feedback_markdown(r: Result, tests: HiddenTests, late=None) -> str:
-    return reports.feedback_markdown(r, tests, late)
 
 
 class Reports:
