@@ -48,7 +48,7 @@ Lesson: ``notebooks/02_beta_constraints.ipynb`` (the three characterizations agr
 from __future__ import annotations
 
 import html
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
 import numpy as np
@@ -59,7 +59,7 @@ from ._validation import check_finite_scalar, check_integer, scaled_norm
 from .differential_geometry import _arc_length_derivatives_unit, _typical_speed
 from .parametrization import as_parametrization
 
-__all__ = ["CHARACTERIZATIONS", "JointReport", "curve_continuity", "joint_continuity"]
+__all__ = ["CHARACTERIZATIONS", "JointReport", "curve_continuity", "joint_continuity", "joint_report"]
 
 #: Names of the three characterizations of G^n (seed 000 §4, §5, §6).
 CHARACTERIZATIONS = ("reparametrization", "beta_constraints", "arc_length")
@@ -507,3 +507,37 @@ def curve_continuity(
         atol,
         list(range(curve.n_joints)),
     )
+
+
+def joint_report(curve: object, j: int, max_order: int = 3) -> JointReport:
+    """The :class:`JointReport` of joint ``j`` of a PiecewiseBezier alone.
+
+    Only segments ``j`` and ``j + 1`` are analysed (with their knots, so in the global
+    parameter, as :func:`curve_continuity` does); a live demo asks this on every frame.
+
+    Parameters
+    ----------
+    curve : PiecewiseBezier
+    j : int
+        The joint, ``0 <= j < curve.n_joints``.
+    max_order : int
+        Highest order examined.
+
+    Raises
+    ------
+    TypeError
+        If ``curve`` is not a PiecewiseBezier.
+    ValueError
+        If ``j`` is not a joint of ``curve``.
+    """
+    from .curve import PiecewiseBezier
+
+    if not isinstance(curve, PiecewiseBezier):
+        raise TypeError(f"curve must be a PiecewiseBezier, got {type(curve).__name__}")
+    j = check_integer(j, "j", minimum=0)
+    if j >= curve.n_joints:
+        raise ValueError(f"j must be < {curve.n_joints} (the curve's joints); got {j}")
+    k = curve.knots
+    pair = PiecewiseBezier(curve.segments[j : j + 2], k[j : j + 3] if curve.has_knots else None)
+    (rep,) = curve_continuity(pair, max_order=max_order)
+    return replace(rep, index=j)
