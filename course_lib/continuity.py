@@ -59,7 +59,13 @@ from ._validation import check_finite_scalar, check_integer, scaled_norm
 from .differential_geometry import _arc_length_derivatives_unit, _typical_speed
 from .parametrization import as_parametrization
 
-__all__ = ["CHARACTERIZATIONS", "JointReport", "curve_continuity", "joint_continuity", "joint_report"]
+__all__ = [
+    "CHARACTERIZATIONS",
+    "JointReport",
+    "curve_continuity",
+    "joint_continuity",
+    "joint_report",
+]
 
 #: Names of the three characterizations of G^n (seed 000 §4, §5, §6).
 CHARACTERIZATIONS = ("reparametrization", "beta_constraints", "arc_length")
@@ -395,6 +401,18 @@ def joint_continuity(
         If ``q`` or ``r`` is not regular at the joint (first derivative vanishes):
         geometric continuity is defined for regular parametrizations only; or
         ``max_order`` above the cap.
+
+    Examples
+    --------
+    Two quadratics meeting at ``(2, 1)`` with parallel end tangents of lengths 2 and 4:
+    G1 with ``β1 = 2``, but not C1.
+
+    >>> from course_lib import PiecewiseBezier
+    >>> q = PiecewiseBezier([[[0, 0], [1, 1], [2, 1]]])
+    >>> r = PiecewiseBezier([[[2, 1], [4, 1], [5, 0]]])
+    >>> report = joint_continuity(q, r, max_order=2)
+    >>> report.g_order, report.c_order, report.betas[0]
+    (1, 0, 2.0)
     """
     own_work.require("course_lib.continuity.joint_continuity")
     q = as_parametrization(q, "q")
@@ -482,6 +500,13 @@ def curve_continuity(
     Derivatives are taken in the *global* parameter (segment ``i`` on
     ``[t_i, t_{i+1}]``, seed 004 §19.7), so the knots affect ``c_order`` but
     not ``g_order``.
+
+    Examples
+    --------
+    >>> from course_lib import PiecewiseBezier
+    >>> wave = PiecewiseBezier([[[0, 0], [1, 1], [2, 0]], [[2, 0], [3, -1], [4, 0]]])
+    >>> [(j.g_order, j.c_order) for j in curve_continuity(wave, max_order=2)]
+    [(1, 1)]
     """
     own_work.require("course_lib.continuity.curve_continuity")
     from .curve import PiecewiseBezier
@@ -529,6 +554,14 @@ def joint_report(curve: object, j: int, max_order: int = 3) -> JointReport:
         If ``curve`` is not a PiecewiseBezier.
     ValueError
         If ``j`` is not a joint of ``curve``.
+
+    Examples
+    --------
+    >>> from course_lib import PiecewiseBezier
+    >>> wave = PiecewiseBezier([[[0, 0], [1, 1], [2, 0]], [[2, 0], [3, -1], [4, 0]]])
+    >>> report = joint_report(wave, 0, max_order=2)
+    >>> report.index, report.g_order
+    (0, 1)
     """
     from .curve import PiecewiseBezier
 
