@@ -96,7 +96,7 @@ def test_edition_holds_what_a_student_needs(edition):
     assert "--config=.jupyter-course/jupyter_server_config.py" in (edition / "Makefile").read_text()
     # the edition installs course_lib alone (tools/ stays with the instructors)
     pyproject = (edition / "pyproject.toml").read_text(encoding="utf-8")
-    assert 'include = ["course_lib*"]' in pyproject and "tools" not in pyproject
+    assert 'include = ["course_lib*"]' in pyproject and '"tools*"' not in pyproject
     # its welcome page names only the edition's commands and links nothing it does not hold
     welcome = (edition / "notebooks" / "00_welcome.ipynb").read_text(encoding="utf-8")
     assert "make submit HW=hw01" in welcome and "make lab" in welcome
