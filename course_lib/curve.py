@@ -712,6 +712,17 @@ class PiecewiseBezier:
         return PiecewiseBezier._fast(segs, self._knots if self.has_knots else None, self._info)
 
     def segment_curve(self, i: int) -> PiecewiseBezier:
-        """Segment ``i`` alone, as a one-segment curve."""
+        """Segment ``i`` alone, as a one-segment curve.
+
+        Examples
+        --------
+        With knots ``0, 1, 3`` the second segment spans ``[1, 3]``; on its own it runs on ``[0, 1]``:
+
+        >>> c = PiecewiseBezier([[[0, 0], [1, 1], [2, 0]], [[2, 0], [3, -1], [4, 0]]], knots=[0, 1, 3])
+        >>> c.domain, c.evaluate(2.0)
+        ((0.0, 3.0), array([ 3. , -0.5]))
+        >>> c.segment_curve(1).evaluate(0.5)
+        array([ 3. , -0.5])
+        """
         i = self._check_segment(i)
         return PiecewiseBezier._fast([self.segments[i]])

@@ -412,6 +412,14 @@ def quartic_beta_spline(
 
     ``beta1, beta2, beta3``: scalars (global), or one value per interior joint (arrays of
     ``N - 5`` values; scalars are broadcast), see :func:`beta_spline`.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> V = np.array([[0, 0], [1, 2], [3, 2], [4, 0], [6, 1], [7, 3]])
+    >>> curve = quartic_beta_spline(V, beta1=1.0, beta2=0.0, beta3=0.0)
+    >>> curve.n_segments, curve.degrees
+    (2, (4, 4))
     """
     parts = [
         np.asarray(as_real_array(b, f"beta{i + 1}")) for i, b in enumerate((beta1, beta2, beta3))

@@ -31,7 +31,13 @@ __all__ = ["onto_change_of_variables", "smoothstep"]
 
 def smoothstep(n: int) -> np.polynomial.Polynomial:
     """The polynomial ``S_n`` of degree ``2n + 1``: ``S(0) = 0``, ``S(1) = 1``, derivatives
-    ``1..n`` zero at 0 and 1 (``S_1 = 3s² - 2s³``)."""
+    ``1..n`` zero at 0 and 1 (``S_1 = 3s² - 2s³``).
+
+    Examples
+    --------
+    >>> print(smoothstep(1))
+    0.0 + 0.0·x + 3.0·x² - 2.0·x³
+    """
     coef = np.zeros(2 * n + 2)
     for k in range(n + 1):
         coef[n + 1 + k] = (-1) ** k * comb(n + k, k) * comb(2 * n + 1, n - k)

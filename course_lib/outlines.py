@@ -608,6 +608,14 @@ def classify_joints(
     Returns
     -------
     JointTable
+
+    Examples
+    --------
+    A right triangle from SVG path data: three corners.
+
+    >>> table = classify_joints(svg_outline("M 0 0 L 2 0 L 2 2 Z"))
+    >>> table.kind.tolist(), table.angle.tolist()
+    (['corner', 'corner', 'corner'], [90.0, 135.0, 135.0])
     """
     own_work.require("course_lib.outlines.classify_joints")
     if not isinstance(outline, Outline):

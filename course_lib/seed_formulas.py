@@ -52,6 +52,13 @@ def inverse_betas(betas: Sequence[object]) -> tuple:
     ------
     ValueError
         If not 1 to 4 values are given, or β1 is a number ``<= 0``.
+
+    Examples
+    --------
+    >>> inverse_betas([2.0, 1.0])
+    (0.5, -0.125)
+    >>> inverse_betas(inverse_betas([2.0, 1.0]))
+    (2.0, 1.0)
     """
     b = list(betas)
     if not 1 <= len(b) <= 4:

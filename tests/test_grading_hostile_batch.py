@@ -23,21 +23,19 @@ from __future__ import annotations
 import csv
 import hashlib
 import os
-import sys
 from pathlib import Path
 
 import nbformat
 import pytest
 from _homework_support import load
 
+from tools import grade
+
 ROOT = Path(__file__).resolve().parents[1]
 HIDDEN = ROOT / "solutions" / "hidden_tests" / "hw01.py"
 SOLUTION = ROOT / "solutions" / "hw01_reparametrization.ipynb"
 
-sys.path.insert(0, str(ROOT / "tests" / "fixtures" / "redteam"))
-import hostile_files  # noqa: E402
-
-grade = load("grade_hostile", ROOT / "tools" / "grade.py")
+hostile_files = load("hostile_files", ROOT / "tests" / "fixtures" / "redteam" / "hostile_files.py")
 safe_names = grade.safe_names
 
 ok, why = grade.sandbox.bwrap_works()
@@ -151,7 +149,7 @@ def test_victims_keep_full_marks_and_their_own_feedback(batch):
         assert float(batch["rows"][name]["total"]) == tests.max_points
         full = grade.Result(name, dict(tests.points), dict.fromkeys(tests.points, ""),
                             fractions=dict.fromkeys(tests.points, 1.0))  # fmt: skip
-        assert _feedback(batch, name) == grade.feedback_markdown(full, tests)
+        assert _feedback(batch, name) == grade.reports.feedback_markdown(full, tests)
 
 
 @pytest.mark.parametrize("attack", sorted(ALL_ATTACKS))

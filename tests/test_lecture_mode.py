@@ -20,7 +20,6 @@ import urllib.request
 from pathlib import Path
 
 import pytest
-from _homework_support import load
 
 ROOT = Path(__file__).resolve().parents[1]
 NOTEBOOK = ROOT / "tests" / "fixtures" / "lecture_demo.ipynb"
@@ -136,7 +135,9 @@ def log_text(f) -> str:
 # ----------------------------------------------- make present: the deck of a lecture
 def _present():
 
-    return load("present", ROOT / "tools" / "present.py")
+    from tools import present
+
+    return present
 
 
 def test_deck_is_the_lecture_without_answer_cells(tmp_path):

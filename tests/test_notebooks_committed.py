@@ -8,14 +8,13 @@ prose makes are `assert` cells, so executing a notebook checks it.
 from __future__ import annotations
 
 import json
-import sys
 from pathlib import Path
 
 import pytest
 
+from tools.strip_notebooks import course_notebooks, is_stripped
+
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "tools"))
-from strip_notebooks import course_notebooks, is_stripped  # noqa: E402
 
 NOTEBOOKS = course_notebooks()
 IDS = [str(p.relative_to(ROOT)) for p in NOTEBOOKS]

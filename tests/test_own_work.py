@@ -25,6 +25,7 @@ from _homework_support import VariantHomework, load
 
 from course_lib import own_work, variants
 from course_lib.checks import HOMEWORKS, check, questions, registry
+from tools.grading.protocol import LocalStudent, run_question
 
 ROOT = Path(__file__).resolve().parents[1]
 HIDDEN = {
@@ -32,7 +33,6 @@ HIDDEN = {
     for hw in HOMEWORKS
 }
 
-from grading.protocol import LocalStudent, run_question  # noqa: E402  (path set by _homework_support)
 
 
 def _outline_of(P0, A, B, P2):
@@ -293,7 +293,7 @@ LAZY_CELLS = {
 def test_a_lazy_notebook_graded_in_the_sandbox(tmp_path):
     import nbformat
 
-    grade = load("grade_own_work", ROOT / "tools" / "grade.py")
+    from tools import grade
     (solution,) = sorted((ROOT / "solutions").glob("hw03_*.ipynb"))
     nb = nbformat.read(solution, as_version=4)
     for cell in nb.cells:

@@ -39,6 +39,8 @@ from urllib.parse import unquote, urlsplit
 import pytest
 from _homework_support import load
 
+from tools import build_handouts, build_site
+
 ROOT = Path(__file__).resolve().parents[1]
 ARTIFACTS = ROOT / "test-artifacts" / "site"
 LECTURE = "01_parametric_continuity"  # the lecture page screenshot in the browser
@@ -48,12 +50,6 @@ PAGES = {"index": "index.html", "course": "course.html", LECTURE: f"lectures/{LE
 PAGES |= {p.stem: f"homework/{p.stem}.html" for p in sorted((ROOT / "exercises").glob("hw*.ipynb"))[:1]}
 
 
-def _load(name: str):
-    return load(name, ROOT / "tools" / f"{name}.py")
-
-
-build_site = _load("build_site")
-build_handouts = _load("build_handouts")
 
 
 # ----------------------------------------------------------------------------- fixtures

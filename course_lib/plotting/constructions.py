@@ -143,10 +143,6 @@ def _draw(ax, diagram: Diagram, *, label_offsets: Mapping[str, tuple] | None = N
     return diagram
 
 
-def _fmt(x: float | None, name: str) -> str:
-    return name if x is None else f"{name} = {x:.3g}"
-
-
 # ----------------------------------------------------------------- stitching
 def _stitch_parts(V: np.ndarray, W: np.ndarray, labels: bool):
     """Points, the q/r polygons and the labels shared by the G1 and G2 stitching diagrams."""

@@ -735,6 +735,35 @@ def _note_variant_mismatch(session, timeout: float, variant: str, result: Result
         )
 
 
+def _note_manifest(nb, homework: str, result: Result) -> None:
+    """What the submit() manifest says (student, time), and whether it still holds."""
+    manifest = manifest_of(nb)
+    if manifest is None:
+        return
+    result.manifest_student = manifest["student"]
+    result.submitted = manifest["time"].isoformat()
+    result.time_source = "manifest"
+    if manifest["tampered"]:
+        result.run_notes.append("the notebook was changed after submit() (checksum mismatch)")
+    if manifest["homework"] != homework:
+        result.run_notes.append(f"submitted as {manifest['homework']!r}, graded as {homework!r}")
+
+
+def _note_cell_errors(
+    errors: dict, positions: list, cells: list, lim: sandbox.Limits, result: Result
+) -> None:
+    """The cells that raised (at most 12 notes in all), and what a full disk means."""
+    for k in sorted(errors):
+        if len(result.run_notes) < 12:
+            where = describe_cell(k + 1, positions[k], cells[k])
+            result.run_notes.append(f"{where} raised {errors[k]}")
+    if any("[Errno 28]" in e for e in errors.values()):
+        result.run_notes.append(
+            f"'No space left on device' is a limit of the grader: /tmp and /dev/shm hold "
+            f"{lim.tmp_bytes >> 20} MB each, the job folder {lim.disk_bytes >> 20} MB"
+        )
+
+
 def grade_notebook(
     path: Path,
     tests: HiddenTests,
@@ -766,18 +795,7 @@ def grade_notebook(
         return result
     cells = [str(c.get("source", "")) for c in nb.cells if c.get("cell_type") == "code"]
     positions = [n for n, c in enumerate(nb.cells, start=1) if c.get("cell_type") == "code"]
-    manifest = manifest_of(nb)
-    if manifest is not None:
-        result.manifest_student = manifest["student"]
-        result.submitted = manifest["time"].isoformat()
-        result.time_source = "manifest"
-        if manifest["tampered"]:
-            result.run_notes.append("the notebook was changed after submit() (checksum mismatch)")
-        if manifest["homework"] != tests.homework:
-            result.run_notes.append(
-                f"submitted as {manifest['homework']!r}, graded as {tests.homework!r}"
-            )
-
+    _note_manifest(nb, tests.homework, result)
     variant_data = None
     if tests.variants:
         from course_lib import variants
@@ -807,16 +825,7 @@ def grade_notebook(
             result.points[q] = round(fraction * tests.points[q], 2)
             result.fractions[q] = fraction
             result.notes[q] = note
-        for k in sorted(session.errors):
-            if len(result.run_notes) < 12:
-                where = describe_cell(k + 1, positions[k], cells[k])
-                result.run_notes.append(f"{where} raised {session.errors[k]}")
-        if any("[Errno 28]" in e for e in session.errors.values()):
-            lim = opts.limits
-            result.run_notes.append(
-                f"'No space left on device' is a limit of the grader: /tmp and /dev/shm hold "
-                f"{lim.tmp_bytes >> 20} MB each, the job folder {lim.disk_bytes >> 20} MB"
-            )
+        _note_cell_errors(session.errors, positions, cells, opts.limits, result)
     finally:
         session.close()
         _note_limits(session.hits, opts.limits, result)
