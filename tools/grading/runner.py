@@ -29,7 +29,7 @@ import nbformat
 from course_lib import own_work
 from course_lib.submit import describe_cell, error_text, manifest_of
 
-from . import jobroot, protocol, sandbox
+from . import jobroot, protocol, sandbox, tamper
 
 DEFAULT_CELL_TIMEOUT = 60.0
 DEFAULT_TIME_LIMIT = 300.0
@@ -116,6 +116,8 @@ class Result:
     #: the fraction of each question's credit earned (0..1); a feedback-only question (0 points)
     #: is right or wrong here although it adds nothing to the total
     fractions: dict[str, float] = field(default_factory=dict)
+    #: why the notebook's code was flagged for the instructor (tools/grading/tamper.py)
+    review: list[str] = field(default_factory=list)
 
     def right(self, q: str, points: float) -> bool:
         """Did the answer to ``q`` earn full credit (also for a feedback-only question)?"""
@@ -755,6 +757,7 @@ def grade_notebook(
     for q in questions:
         if result.fractions.get(q, 0.0) < 1.0 and not result.notes[q]:
             result.notes[q] = "wrong answer"
+    tamper.apply(result, cells, tests.homework, tests.points)  # flagged; certain: guards' points 0
     if mode != "bwrap":
         result.run_notes.append(UNSANDBOXED_NOTE)
     result.seconds = round(time.monotonic() - start, 1)
