@@ -58,13 +58,22 @@ _FUNCTION_INTERNALS = frozenset({"__code__", "__globals__", "__closure__", "__bu
 _SPAWNING_MODULES = frozenset({"subprocess", "multiprocessing", "pty", "pexpect", "sh"})
 _LOW_LEVEL_MODULES = frozenset({"ctypes", "_ctypes", "cffi", "_testcapi", "_xxsubinterpreters"})
 _OS_SPAWN = ("system", "popen", "exec", "spawn", "fork", "posix_spawn", "forkpty")
-_FRAME_CALLS = frozenset(
-    {"sys._getframe", "sys._current_frames", "inspect.currentframe", "inspect.stack",
-     "inspect.trace", "inspect.getouterframes", "inspect.getinnerframes", "gc.get_referrers",
-     "gc.get_referents", "gc.get_objects", "sys.settrace", "sys.setprofile",
-     "threading.settrace", "threading.setprofile", "importlib.reload", "sys.executable",
-     "concurrent.futures.ProcessPoolExecutor"}
-)  # fmt: skip
+#: names whose use is flagged -> what they reach
+_REACHES = {
+    **dict.fromkeys(
+        ("sys._getframe", "sys._current_frames", "inspect.currentframe", "inspect.stack",
+         "inspect.trace", "inspect.getouterframes", "inspect.getinnerframes"),
+        "reads the interpreter's frames",
+    ),
+    **dict.fromkeys(("gc.get_referrers", "gc.get_referents", "gc.get_objects"),
+                    "searches the garbage collector's objects"),
+    **dict.fromkeys(("sys.settrace", "sys.setprofile", "threading.settrace",
+                     "threading.setprofile"), "sets a tracer"),
+    "importlib.reload": "reloads a module",
+    "sys.executable": "starts Python in another process",
+    "concurrent.futures.ProcessPoolExecutor": "starts other processes",
+}  # fmt: skip
+_FRAME_CALLS = frozenset(_REACHES)
 _SHELL_MAGICS = frozenset(
     {"system", "sx", "bash", "sh", "script", "python", "python2", "python3", "pypy", "perl",
      "ruby", "run", "writefile", "file"}
@@ -197,7 +206,7 @@ class _Scanner(ast.NodeVisitor):
                 certain=self._private_after_guard(dotted),
             )
         elif dotted in _FRAME_CALLS:
-            self.add(f"uses {dotted} (frames, tracers, other processes or the garbage collector)")
+            self.add(f"uses {dotted} ({_REACHES[dotted]})")
         elif dotted.startswith("os.") and dotted[3:].startswith(_OS_SPAWN):
             self.add(f"uses {dotted} (starts other processes)")
         else:
@@ -467,7 +476,8 @@ def apply(result, cells: list[str], homework: str, points: dict[str, float]) -> 
     findings = scan(cells)
     if not findings:
         return findings
-    result.review = [str(f) for f in findings[:5]] + (
+    shown = sorted(findings, key=lambda f: not f.certain)[:5]  # certain ones first
+    result.review = [str(f) for f in shown] + (
         [f"and {len(findings) - 5} more"] if len(findings) > 5 else []
     )
     result.status = f"{result.status}; {FLAG}"
