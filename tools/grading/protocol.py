@@ -104,8 +104,11 @@ def exercise_note(response: dict) -> str:
 
     question, implementation = response.get("question"), response.get("implementation")
     if isinstance(question, str) and isinstance(implementation, str):
-        exercise = own_work.EXERCISES.get(question) or own_work.VALUE_EXERCISES.get(question)
-        if exercise is not None and implementation in exercise.implementations:
+        # a value implementation names every question of its homework it computes ("hw03.q1,
+        # hw03.q3 and hw03.q5"): each must list it
+        named = question.replace(" and ", ", ").split(", ")
+        rows = [own_work.EXERCISES.get(q) or own_work.VALUE_EXERCISES.get(q) for q in named]
+        if all(row is not None and implementation in row.implementations for row in rows):
             if response.get("switched_off") is True:
                 return own_work.switched_off_message(implementation, question)
             return own_work.exercise_message(implementation, question)

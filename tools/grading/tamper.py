@@ -54,6 +54,7 @@ _FRAME_ATTRS = frozenset(
     {"f_locals", "f_globals", "f_back", "f_builtins", "tb_frame", "gi_frame", "cr_frame",
      "ag_frame", "f_trace"}
 )  # fmt: skip
+_FRAME_NAMESPACES = frozenset({"f_locals", "f_globals", "f_builtins"})
 _FUNCTION_INTERNALS = frozenset({"__code__", "__globals__", "__closure__", "__builtins__"})
 _SPAWNING_MODULES = frozenset({"subprocess", "multiprocessing", "pty", "pexpect", "sh"})
 _LOW_LEVEL_MODULES = frozenset({"ctypes", "_ctypes", "cffi", "_testcapi", "_xxsubinterpreters"})
@@ -215,7 +216,11 @@ class _Scanner(ast.NodeVisitor):
 
     def written(self, target: ast.AST, how: str) -> None:
         """``target`` is assigned, deleted or mutated."""
-        dotted = self.resolve(target.value if isinstance(target, ast.Subscript) else target)
+        inner = target.value if isinstance(target, ast.Subscript) else target
+        if isinstance(inner, ast.Attribute) and inner.attr in _FRAME_NAMESPACES:
+            self.add(f"{how} a frame's namespace", certain=True)
+            return
+        dotted = self.resolve(inner)
         if isinstance(target, ast.Attribute):
             if target.attr in _FUNCTION_INTERNALS:
                 self.add(f"{how} a function's {target.attr}", certain=True)
@@ -405,10 +410,9 @@ class _Scanner(ast.NodeVisitor):
                 self.add(f"{func} of a name that is not a module's")
         elif isinstance(node.func, ast.Attribute) and node.func.attr in _MUTATORS:
             owner = self.resolve(node.func.value)
-            if owner and (
-                self._guard_path(owner)
-                or owner.startswith("sys.modules")
-                or owner.split(".")[-1] in _FRAME_ATTRS
+            if (owner and (self._guard_path(owner) or owner.startswith("sys.modules"))) or (
+                isinstance(node.func.value, ast.Attribute)
+                and node.func.value.attr in _FRAME_NAMESPACES
             ):
                 self.written(node.func.value, "changes")
             key = _const_str(args[0]) if args else None
