@@ -20,8 +20,17 @@ active while a frame of :func:`run_exercise` is on the calling thread's stack --
 ``guarded`` names the implementations -- and, for other threads and child processes, while it
 is listed in a process-wide set and in the environment variable ``COURSE_LIB_EXERCISE``.  The
 evaluator activates it at evaluation time and restores the state afterwards, so nothing a
-notebook sets before the check (a flag, a cleared list, a rebound name) switches it off, and
-a running frame's locals cannot be rewritten from Python.
+notebook sets before the check (a flag, a cleared list, a rebound name) switches it off.
+
+In the grader's sandbox none of that decides alone: the grader writes the homework it grades
+and the questions it is evaluating into a file the sandbox shows read-only at
+:data:`GRADER_STATE_FILE` (``tools/grading/sandbox.py`` binds it, ``runner.py`` writes it
+around each request), and :func:`require` reads it in every process there -- the kernel, its
+threads, a child started with an empty environment (``subprocess.run(..., env={})``,
+``multiprocessing`` spawn) -- so emptying the frame's ``guarded`` or ``_ACTIVE``, shedding the
+environment or hiding ``HOMEWORK`` changes nothing the grader counts.  What a notebook's code
+does to this module in the kernel is also flagged for the instructor by the grader's scan of
+the notebook (``tools/grading/tamper.py``).
 
 Value questions
 ---------------
@@ -38,9 +47,10 @@ module's ``own_work``, a guarded function's ``__code__``.
 
 What it does not stop (README, "The rule"): code in the same interpreter can always rewrite code
 in it -- a notebook that replaces the probe, ``__import__`` or this module's own references
-before the evaluation can call the library unguarded, and
-one that hides ``HOMEWORK`` (or computes in a thread) while it computes a value;
-copying a function's source text out of ``course_lib`` is copying, as from a book.
+before the evaluation can call the library unguarded (in the grader such code is flagged, and
+writing into this module's state costs the guarded questions), and in the student's own kernel
+(no state file) one that hides ``HOMEWORK`` or computes in a thread gets a value past the
+check; copying a function's source text out of ``course_lib`` is copying, as from a book.
 """
 
 from __future__ import annotations
