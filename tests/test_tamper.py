@@ -160,3 +160,11 @@ def test_the_summary_acts_on_it_first_with_the_reasons():
     assert "grader's guards" in first and "3004" in first and "own_work.require" in first
     assert identity.TAMPERING in identity.FLAGS
     assert identity.TAMPERING in {flag for flag, _ in reports.ACT_ON}
+
+
+def test_code_too_deep_to_read_is_flagged_not_a_crash():
+    deep = "x = " + "[" * 5000 + "]" * 5000
+    findings = tamper.scan([PREP, deep])
+    assert all(f.cell == 2 for f in findings)  # flagged, or unparsable (then it cannot run)
+    nested_exec = "exec(" * 3 + '"import ctypes"' + ")" * 3
+    assert tamper.scan([nested_exec]) != []

@@ -447,13 +447,16 @@ def scan(cells: Iterable[str]) -> list[Finding]:
     scanner = _Scanner()
     for number, source in enumerate(cells, start=1):
         scanner.cell = number
-        tree = _python(str(source))
-        if tree is not None:
-            scanner.visit(tree)
-        while scanner.strings:  # code in a string given to exec/eval/compile: read it too
-            tree = _python(scanner.strings.pop())
-            if tree is not None:
-                scanner.visit(tree)
+        todo = [str(source)]
+        while todo:  # the cell, then code in a string given to exec/eval/compile
+            tree = _python(todo.pop())
+            try:
+                if tree is not None:
+                    scanner.visit(tree)
+            except RecursionError:
+                scanner.add("is nested too deeply to be read")
+            todo += scanner.strings
+            scanner.strings = []
     findings = scanner.findings
     # a frame's locals written where the guard state is named: certain
     frames = any("frame's" in f.reason for f in findings)
