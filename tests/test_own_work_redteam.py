@@ -49,7 +49,7 @@ ROSTER = (
 )
 
 # the bypasses, each replacing the cell that starts with ``anchor`` in the solution
-CHILD = '''
+CHILD = """
 import json, os, subprocess, sys
 import course_lib
 
@@ -67,9 +67,9 @@ def knot_ratio_beta1(knots):
         env={}, capture_output=True, text=True, timeout=60,
     )
     return np.array(json.loads(done.stdout))
-'''
+"""
 
-SPAWN = '''
+SPAWN = """
 import multiprocessing
 from course_lib import knot_splines
 
@@ -77,9 +77,9 @@ from course_lib import knot_splines
 def knot_ratio_beta1(knots):
     with multiprocessing.get_context("spawn").Pool(1) as pool:
         return pool.apply(knot_splines.knot_ratio_beta1, (np.asarray(knots, dtype=float),))
-'''
+"""
 
-FRAMES = '''
+FRAMES = """
 import sys
 from course_lib import knot_splines
 
@@ -92,18 +92,18 @@ def knot_ratio_beta1(knots):
         frame = frame.f_back
     knot_splines.own_work._ACTIVE.clear()
     return knot_splines.knot_ratio_beta1(knots)
-'''
+"""
 
-HIDDEN = '''
+HIDDEN = """
 from course_lib.knot_splines import bezier_points_from_g1
 
 _kept = HOMEWORK
 del HOMEWORK
 answer_q1 = bezier_points_from_g1(D[:6], DATA["q1"]["knots"])[3]
 HOMEWORK = _kept
-'''
+"""
 
-Q7, Q1 = "def knot_ratio_beta1(knots):", "t0, t1, t2 = DATA[\"q1\"][\"knots\"]"
+Q7, Q1 = "def knot_ratio_beta1(knots):", 't0, t1, t2 = DATA["q1"]["knots"]'
 CHEATS = {"3002": (Q7, CHILD), "3003": (Q7, SPAWN), "3004": (Q7, FRAMES), "3005": (Q1, HIDDEN)}
 
 

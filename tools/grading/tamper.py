@@ -237,7 +237,9 @@ class _Scanner(ast.NodeVisitor):
             self.add(f"{how} {self._short(dotted)} (the grader's guard)", certain=True)
         elif dotted == "sys.modules" or dotted.startswith("sys.modules."):
             self.add(f"{how} sys.modules", certain=True)
-        elif dotted in ("builtins", "__builtins__") or dotted.startswith(("builtins.", "__builtins__.")):
+        elif dotted in ("builtins", "__builtins__") or dotted.startswith(
+            ("builtins.", "__builtins__.")
+        ):
             self.add(f"{how} builtins ({self._short(dotted)})", certain="__import__" in dotted)
         elif dotted.startswith("course_lib.") and isinstance(
             target, (ast.Attribute, ast.Subscript)
@@ -264,7 +266,9 @@ class _Scanner(ast.NodeVisitor):
     # ------------------------------------------------------------------ imports
     def visit_Import(self, node: ast.Import) -> None:
         for a in node.names:
-            self.aliases[a.asname or a.name.split(".")[0]] = a.name if a.asname else a.name.split(".")[0]
+            self.aliases[a.asname or a.name.split(".")[0]] = (
+                a.name if a.asname else a.name.split(".")[0]
+            )
             self.imported(a.name)
             if a.asname:
                 self.binding(a.asname, None, node)
@@ -421,7 +425,10 @@ class _Scanner(ast.NodeVisitor):
             if key == "guarded":
                 self.add("writes a frame's 'guarded' (the grader's guard state)", certain=True)
         if isinstance(node.func, ast.Attribute) and node.func.attr in (
-            "system", "getoutput", "run_cell_magic", "run_line_magic"
+            "system",
+            "getoutput",
+            "run_cell_magic",
+            "run_line_magic",
         ):
             owner = node.func.value
             if isinstance(owner, ast.Call):  # get_ipython().system(...)
@@ -462,7 +469,9 @@ def scan(cells: Iterable[str]) -> list[Finding]:
     frames = any("frame's" in f.reason for f in findings)
     named = any("'guarded'" in f.reason for f in findings)
     if frames and named:
-        findings = [Finding(f.cell, f.reason, True) if "'guarded'" in f.reason else f for f in findings]
+        findings = [
+            Finding(f.cell, f.reason, True) if "'guarded'" in f.reason else f for f in findings
+        ]
     return findings
 
 
