@@ -20,10 +20,13 @@ Requests and responses are JSON text (never pickle):
 
 A response is ``{"ok": true, "value": <encoded>}`` or ``{"ok": false, "error": KIND, "message":
 TEXT}`` with KIND one of ``missing``, ``ellipsis``, ``not_implemented``, ``raised``,
-``unsupported``, ``bad_request``.  Encoded values are JSON scalars and lists, plus the tagged
-objects ``__ndarray__`` (with ``shape`` and ``kind``), ``__complex__``, ``__float__`` (nan/inf),
-``__callable__``, ``__dict__`` and ``__sympy__`` (a string, for display only: the grader never
-parses it).
+``unsupported``, ``bad_request`` -- or ``exercise``, when a library implementation raised
+:class:`course_lib.own_work.ExerciseError` (it is the exercise being evaluated), with its
+``implementation``, ``question`` and ``switched_off`` as fields: the grader writes the
+sentence from those, checked against the registry, never from the text.  Encoded values
+are JSON scalars and lists, plus the tagged objects ``__ndarray__`` (with ``shape`` and
+``kind``), ``__complex__``, ``__float__`` (nan/inf), ``__callable__``, ``__dict__`` and
+``__sympy__`` (a string, for display only: the grader never parses it).
 """
 
 from __future__ import annotations
@@ -261,6 +264,18 @@ def _fail(kind: str, message: str) -> dict:
     return {"ok": False, "error": kind, "message": message[:500]}
 
 
+def _exercise(exc: own_work.ExerciseError) -> dict:
+    """The response for a library implementation that is the exercise being evaluated."""
+    return {
+        "ok": False,
+        "error": "exercise",
+        "implementation": str(exc.implementation)[:300],
+        "question": str(exc.question)[:100],
+        "switched_off": bool(exc.switched_off),
+        "message": str(exc)[:500],
+    }
+
+
 def _lookup(namespace: dict, name: Any) -> tuple[bool, Any]:
     if not isinstance(name, str) or name not in namespace:
         return False, None
@@ -356,6 +371,8 @@ def handle(request: dict, namespace: dict) -> dict:
             points = [[float(x) for x in p] for p in request.get("points", [])]
             return {"ok": True, "value": _evaluate_expression(value, symbols, points)}
         return _fail("bad_request", f"unknown op {op!r}")
+    except own_work.ExerciseError as exc:  # the marker of the exercise, by type, not by text
+        return _exercise(exc)
     except Unsupported as exc:
         return _fail("unsupported", str(exc))
     except NotImplementedError:

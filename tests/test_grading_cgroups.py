@@ -17,12 +17,10 @@ import sys
 from pathlib import Path
 
 import pytest
-from _homework_support import load
+
+from tools.grading import runner, sandbox
 
 ROOT = Path(__file__).resolve().parents[1]
-grade = load("grade_cgroups", ROOT / "tools" / "grade.py")
-sandbox = grade.sandbox
-from grading import runner  # noqa: E402  (tools/ on the path: _homework_support, as grade.py)
 
 LIMITS = sandbox.Limits(memory_bytes=1 << 30, tmp_bytes=8 << 20, disk_bytes=32 << 20)
 

@@ -12,9 +12,8 @@ from pathlib import Path
 
 import pytest
 
-from tools import release
-
 from course_lib.submit import find_homework
+from tools import release
 
 ROOT = Path(__file__).resolve().parents[1]
 

@@ -26,9 +26,10 @@ from pathlib import Path
 
 import nbformat
 
+from course_lib import own_work
 from course_lib.submit import describe_cell, error_text, manifest_of
 
-from . import jobroot, protocol, sandbox
+from . import jobroot, protocol, sandbox, tamper
 
 DEFAULT_CELL_TIMEOUT = 60.0
 DEFAULT_TIME_LIMIT = 300.0
@@ -117,6 +118,8 @@ class Result:
     fractions: dict[str, float] = field(default_factory=dict)
     #: why intake refused to open the student's file ("a link, not graded"), "" if it was opened
     refused: str = ""
+    #: why the notebook's code was flagged for the instructor (tools/grading/tamper.py)
+    review: list[str] = field(default_factory=list)
 
     def right(self, q: str, points: float) -> bool:
         """Did the answer to ``q`` earn full credit (also for a feedback-only question)?"""
@@ -468,6 +471,7 @@ class _Session:
         self.responses = job  # where the probe writes its answers (grade_notebook sets it)
         self.mounted = False  # is the job folder a size-limited tmpfs (else checked per cell)
         self.hits: set[str] = set()  # limits met by its sandboxes (counted by the sandbox)
+        self.homework = ""  # written to the grader's state file (own_work) with each request
 
     def ensure(self) -> _Kernel | None:
         """A kernel that has run every (non-skipped) student cell, or None."""
@@ -546,7 +550,11 @@ class _Session:
                     f"the test did not finish within {self.opts.question_timeout:g} s "
                     "(an endless loop in your code?)"
                 )
+            guarded = own_work.questions_of(request.get("name")) if request.get("op") == "call" else ()
+            state = sandbox.grader_state_path(self.job)
             try:
+                if guarded:  # every process of the sandbox reads it (own_work.require)
+                    state.write_text(own_work.grader_state_text(self.homework, guarded))
                 kernel.run(source, left)
             except _WallLimit:
                 self.kernel = None
@@ -565,6 +573,9 @@ class _Session:
                 else:
                     why = f"the test was stopped: {exc.why}"
                 raise protocol.ChannelBroken(why) from None
+            finally:
+                if guarded:
+                    state.write_text(own_work.grader_state_text(self.homework))
             return _read_limited(response, protocol.MAX_RESPONSE_BYTES + 1)
 
         return send
@@ -806,6 +817,9 @@ def grade_notebook(
             result.run_notes.append(f"graded on the student's own data (variant {variant})")
     job, mounted = jobroot.job_folder(jobroot.job_root(job_root), opts.limits.disk_bytes)
     session = _Session(job, cells, opts, start + time_limit, result)
+    session.homework = tests.homework
+    # the sandbox shows it read-only: the homework's value guards hold in every process there
+    sandbox.grader_state_path(job).write_text(own_work.grader_state_text(tests.homework))
     try:
         session.responses = jobroot.response_folder(job, 4 * protocol.MAX_RESPONSE_BYTES, mounted)
         session.mounted = mounted
@@ -831,9 +845,11 @@ def grade_notebook(
         _note_limits(session.hits, opts.limits, result)
         _note_disk(job, mounted, opts.limits.disk_bytes, result, session.hits)
         jobroot.remove_job_folder(job, mounted)
+        sandbox.grader_state_path(job).unlink(missing_ok=True)
     for q in questions:
         if result.fractions.get(q, 0.0) < 1.0 and not result.notes[q]:
             result.notes[q] = "wrong answer"
+    tamper.apply(result, cells, tests.homework, tests.points)  # flagged; certain: guards' points 0
     if mode != "bwrap":
         result.run_notes.append(UNSANDBOXED_NOTE)
     result.seconds = round(time.monotonic() - start, 1)

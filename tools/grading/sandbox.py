@@ -37,6 +37,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 
 import course_lib
+from course_lib import own_work
 
 LAUNCHER = Path(__file__).with_name("launch.py")
 GIB = 1 << 30
@@ -209,6 +210,12 @@ def _needed_links(bound: list[Path]) -> list[tuple[str, str]]:
     return out
 
 
+def grader_state_path(job: Path) -> Path:
+    """The grader's own file beside ``job`` that the sandbox shows read-only at
+    ``own_work.GRADER_STATE_FILE`` (the runner writes it; the submission cannot)."""
+    return job.parent / f"{job.name}.state"
+
+
 def bwrap_argv(job: Path, limits: Limits | None = None) -> list[str]:
     """The bubblewrap command line (without the command) for a kernel in ``job``."""
     limits = limits or Limits()
@@ -245,6 +252,9 @@ def bwrap_argv(job: Path, limits: Limits | None = None) -> list[str]:
     for target, link in _needed_links(visible):
         argv += ["--symlink", target, link]
     argv += ["--bind", str(job), str(job), "--chdir", str(job)]
+    state = grader_state_path(job)  # which exercises are guarded now: the grader's, read-only
+    if state.is_file():
+        argv += ["--ro-bind", str(state), own_work.GRADER_STATE_FILE]
     # nothing else is writable: not the root bwrap builds, not /dev (both RAM, unbounded)
     argv += ["--remount-ro", "/dev", "--remount-ro", "/"]
     return argv
