@@ -58,7 +58,7 @@ _ROOT = os.path.dirname(os.path.dirname(course_lib.__file__))
 
 def knot_ratio_beta1(knots):
     code = (
-        "import json, sys; sys.path.insert(0, %r); "
+        "import json, sys; sys.path[:0] = [%r]; "
         "from course_lib.knot_splines import knot_ratio_beta1; "
         "print(json.dumps([float(x) for x in knot_ratio_beta1(json.loads(sys.argv[1]))]))"
     ) % _ROOT
