@@ -33,7 +33,7 @@ Cubic G2 (seed 000 §10.2, steps 1a, 1b, 2)
 With β1 = 1 (and β2 = 0) both reduce to the uniform quadratic / cubic B-spline
 (test against scipy.interpolate.BSpline).
 
-Lesson: ``notebooks/06_beta_splines.ipynb``.
+Lesson: ``notebooks/08_beta_splines.ipynb``.
 """
 
 from __future__ import annotations

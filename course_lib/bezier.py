@@ -7,7 +7,7 @@ A Bézier curve of degree ``d`` with control polygon ``V_0, ..., V_d`` is
 for ``u`` in ``[0, 1]`` (seed 000, §8).  Control points are always stored as an
 array of shape ``(d + 1, dim)``, one point per row, ``dim`` in ``{2, 3}``.
 
-Lesson: ``notebooks/05_stitching_bezier_curves.ipynb`` (Bézier facts used for stitching).
+Lesson: ``notebooks/07_stitching_bezier_curves.ipynb`` (Bézier facts used for stitching).
 """
 
 from __future__ import annotations

@@ -26,7 +26,7 @@ segment ``i`` is ``V_i, V_i + D_i^+/3, V_{i+1} - D_{i+1}^-/3, V_{i+1}``.
 The weights φ_{-1}, φ_2 are negative on ``(0, 1)``: Catmull-Rom curves do *not*
 have the convex hull property (test: ``::test_convex_hull_fails``).
 
-Lesson: ``notebooks/05_stitching_bezier_curves.ipynb``.
+Lesson: ``notebooks/07_stitching_bezier_curves.ipynb``.
 """
 
 from __future__ import annotations

@@ -6,7 +6,7 @@ tangents, and the largest difference of their signed curvatures.  Close in curva
 forces close in tangent and distance (for curves that start together, by integrating
 ``κ`` twice); the converse fails.
 
-Lecture: ``notebooks/03_curvature_of_plane_curves.ipynb`` §4.
+Lecture: ``notebooks/05_curvature_of_plane_curves.ipynb`` §4.
 """
 
 from __future__ import annotations

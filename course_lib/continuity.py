@@ -42,7 +42,7 @@ a factor 10 of ``rtol``, or the three disagree, the report says the joint is
 For a :class:`~course_lib.curve.PiecewiseBezier`, :func:`curve_continuity` uses the
 *global* parameter (knots): the knots change the C-order but never the G-order.
 
-Lesson: ``notebooks/02_beta_constraints.ipynb`` (the three characterizations agree).
+Lesson: ``notebooks/04_arc_length_and_theorem_1.ipynb`` (the three characterizations agree).
 """
 
 from __future__ import annotations

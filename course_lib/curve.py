@@ -15,8 +15,8 @@ parameter), of any degree ``>= 1``.  A knot sequence ``t_0 < t_1 < ... < t_S``
 §19.7).  Without knots the curve uses ``t_i = i``.  Derivatives in the global
 parameter carry the chain-rule factor ``(t_{i+1} - t_i)^{-n}``.
 
-Lesson: ``notebooks/01_reparametrization.ipynb`` (piecewise curves and joints),
-``notebooks/04_g1_knot_bezier_splines.ipynb`` (the global parameter).
+Lesson: ``notebooks/01_parametric_continuity.ipynb`` (piecewise curves and joints),
+``notebooks/06_g1_knot_bezier_splines.ipynb`` (the global parameter).
 """
 
 from __future__ import annotations

@@ -20,7 +20,7 @@ Every function accepts any object of the parametrization protocol (``CONTRIBUTIN
 ``(dim,)`` vector or a float, a 1-d ``t`` gives ``(m, dim)`` or ``(m,)``.
 Where a formula divides by ``|c'|`` and ``c'`` vanishes, a ``ValueError`` says so.
 
-Lesson: ``notebooks/03_curvature_of_plane_curves.ipynb`` (unit tangent, signed curvature, fundamental theorem).
+Lesson: ``notebooks/05_curvature_of_plane_curves.ipynb`` (unit tangent, signed curvature, fundamental theorem).
 """
 
 from __future__ import annotations

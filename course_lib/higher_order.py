@@ -30,7 +30,7 @@ With ``β1 = 1, β2 = ... = βn = 0`` the basis is the uniform B-spline of degre
 ``n + 1`` (test against scipy).  For ``n = 1, 2`` it coincides with the geometric
 constructions of :mod:`course_lib.beta_splines` (independent cross-check).
 
-Lesson: ``notebooks/07_higher_order.ipynb``.
+Lesson: ``notebooks/09_higher_order.ipynb``.
 """
 
 from __future__ import annotations

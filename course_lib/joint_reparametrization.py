@@ -14,7 +14,7 @@ where ``φ`` is the smoothstep of order ``n`` (``φ = 0`` left of ``1 - h``, ``�
 prescribed derivatives at 1, is the line for ``ū <= 1 - h`` and maps
 ``[1 - 1/β1, 1]`` onto ``[0, 1]``.
 
-Lecture: ``notebooks/02_beta_constraints.ipynb`` §1.
+Lecture: ``notebooks/03_beta_constraints.ipynb`` §5.
 """
 
 from __future__ import annotations

@@ -18,7 +18,7 @@ global parameter the chain-rule factors ``1/(t_{i+1} - t_i)`` cancel that ratio,
 the spline is C1 in ``t`` (seed 004 exercise 3).  Uniform knots give the midpoint rule
 of the C1 Bézier spline.
 
-Lesson: ``notebooks/04_g1_knot_bezier_splines.ipynb``.
+Lesson: ``notebooks/06_g1_knot_bezier_splines.ipynb``.
 """
 
 from __future__ import annotations

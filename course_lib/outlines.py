@@ -42,7 +42,7 @@ curvature, all vectorized.  Two verdicts:
 :func:`glyph_summary` and :func:`font_summary` count joints, corners, G1 and G2 smooth
 points per glyph and per font.
 
-Lesson: ``notebooks/09_are_letters_smooth.ipynb``.
+Lesson: ``notebooks/11_are_letters_smooth.ipynb``.
 """
 
 from __future__ import annotations

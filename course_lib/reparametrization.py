@@ -18,7 +18,7 @@ curve) when ``Q~ = Q o f`` for a regular ``f: [ũ_0, ũ_f] -> [u_0, u_f]`` onto,
 Derivative vectors are not intrinsic (they change under reparametrization); the unit
 tangent and the curvature are (seed 000 §4).
 
-Lesson: ``notebooks/01_reparametrization.ipynb``.
+Lesson: ``notebooks/02_reparametrization.ipynb``.
 """
 
 from __future__ import annotations

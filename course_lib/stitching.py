@@ -21,7 +21,7 @@ orders ``0..n`` (seed 000 eq. (6)) with the Bézier end derivatives, one point p
 ``W_i = (d-i)!/d! r^{(i)}(0) - sum_{j<i} (-1)^{i-j} C(i, j) W_j``; for ``n = 1, 2`` it is
 eq. (10) and (11a).
 
-Lesson: ``notebooks/05_stitching_bezier_curves.ipynb``.
+Lesson: ``notebooks/07_stitching_bezier_curves.ipynb``.
 """
 
 from __future__ import annotations

@@ -23,7 +23,7 @@ partial derivatives ``u^{(h,l)}, v^{(h,l)}`` (``1 <= h + l <= n``) that appear i
 partials of ``G(u(s, t), v(s, t))`` of orders ``1..n``: seed 001 §3 states there are
 ``n(n + 3)`` shape functions for G^n.
 
-Lesson: ``notebooks/08_surfaces.ipynb``.
+Lesson: ``notebooks/10_surfaces.ipynb``.
 """
 
 from __future__ import annotations

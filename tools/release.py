@@ -148,7 +148,7 @@ def _student_pyproject(text: str) -> str:
 WELCOME = "notebooks/00_welcome.ipynb"
 WELCOME_EDITS = [
     (
-        "| `make present L=04` | shows lecture 04 as slides for a projector: large text, live demos, "
+        "| `make present L=06` | shows lecture 6 as slides for a projector: large text, live demos, "
         "no code (any lecture number works) |\n",
         "",
     ),
