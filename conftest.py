@@ -25,6 +25,28 @@ def pytest_ignore_collect(collection_path: Path, config) -> bool | None:
     return None
 
 
+COURSE_LIB = Path(__file__).resolve().parent / "course_lib"
+
+
+def wants_doctests(path: Path) -> bool:
+    """Doctests run for the modules of ``course_lib`` that have an example (``>>>``) only:
+    no other file is imported for them (tests, hidden tests, fixtures, tools), and a module
+    without examples is not imported just to find none."""
+    path = Path(path).resolve()
+    if path.suffix != ".py" or COURSE_LIB not in path.parents:
+        return False
+    return ">>> " in path.read_text(encoding="utf-8")
+
+
+@pytest.hookimpl(wrapper=True)
+def pytest_collect_file(file_path: Path, parent):
+    """``--doctest-modules`` (pyproject.toml) restricted to :func:`wants_doctests`."""
+    collectors = yield
+    if file_path.suffix == ".py" and not wants_doctests(file_path):
+        collectors = [c for c in collectors if type(c).__name__ != "DoctestModule"]
+    return collectors
+
+
 def _hypothesis_profiles() -> None:
     """In CI (CI=true) property tests draw the same examples every run (derandomized), so a
     landing never depends on luck; locally they explore new examples each run."""

@@ -20,10 +20,13 @@ Requests and responses are JSON text (never pickle):
 
 A response is ``{"ok": true, "value": <encoded>}`` or ``{"ok": false, "error": KIND, "message":
 TEXT}`` with KIND one of ``missing``, ``ellipsis``, ``not_implemented``, ``raised``,
-``unsupported``, ``bad_request``.  Encoded values are JSON scalars and lists, plus the tagged
-objects ``__ndarray__`` (with ``shape`` and ``kind``), ``__complex__``, ``__float__`` (nan/inf),
-``__callable__``, ``__dict__`` and ``__sympy__`` (a string, for display only: the grader never
-parses it).
+``unsupported``, ``bad_request`` -- or ``exercise``, when a library implementation raised
+:class:`course_lib.own_work.ExerciseError` (it is the exercise being evaluated), with its
+``implementation``, ``question`` and ``switched_off`` as fields: the grader writes the
+sentence from those, checked against the registry, never from the text.  Encoded values
+are JSON scalars and lists, plus the tagged objects ``__ndarray__`` (with ``shape`` and
+``kind``), ``__complex__``, ``__float__`` (nan/inf), ``__callable__``, ``__dict__`` and
+``__sympy__`` (a string, for display only: the grader never parses it).
 """
 
 from __future__ import annotations
@@ -101,11 +104,35 @@ def _sympy_module():
 
 
 def encode(value: Any, *, _depth: int = 0, _budget: _Budget | None = None) -> Any:
-    """Encode ``value`` as plain JSON data, or raise :class:`Unsupported`."""
+    """Encode ``value`` as plain JSON data, or raise :class:`Unsupported`.
+
+    The kinds are tried in a fixed order (Python scalars, numpy, lists and dictionaries,
+    sympy, callables): a ``numpy.float64`` is a ``float`` and is sent as one.
+    """
     budget = _budget if _budget is not None else _Budget()
     budget.take()
     if _depth > MAX_DEPTH:
         raise Unsupported(f"the answer is nested more than {MAX_DEPTH} levels deep")
+    for encoder in (_encode_scalar, _encode_numpy, _encode_container, _encode_sympy):
+        out = encoder(value, _depth, budget)
+        if out is not _NOT_MINE:
+            return out
+    if callable(value):
+        return {"__callable__": str(getattr(value, "__name__", type(value).__name__))[:100]}
+    raise Unsupported(f"a value of type {type(value).__name__} cannot be graded")
+
+
+#: What an ``_encode_*`` helper returns for a value of a kind it does not handle
+#: (``None`` is an answer: the encoding of ``None``).
+_NOT_MINE = object()
+
+
+def _complex(real: float, imag: float) -> dict:
+    return {"__complex__": [_float(real), _float(imag)]}
+
+
+def _encode_scalar(value: Any, _depth: int, _budget: _Budget) -> Any:
+    """None, bool, int, float, complex, str (and their subclasses, sent as the base type)."""
     if value is None or isinstance(value, bool):
         return None if value is None else bool(value)
     if isinstance(value, int):
@@ -115,77 +142,90 @@ def encode(value: Any, *, _depth: int = 0, _budget: _Budget | None = None) -> An
     if isinstance(value, float):
         return _float(float.__float__(value))
     if isinstance(value, complex):
-        return {"__complex__": [_float(value.real), _float(value.imag)]}
+        return _complex(value.real, value.imag)
     if isinstance(value, str):
         if len(value) > MAX_STRING:
             raise Unsupported(f"a string in the answer is longer than {MAX_STRING} characters")
         return str.__str__(value)
+    return _NOT_MINE
+
+
+def _encode_numpy(value: Any, depth: int, budget: _Budget) -> Any:
+    """numpy scalars and arrays (only if the notebook imported numpy)."""
     np = sys.modules.get("numpy")
-    if np is not None:
-        if isinstance(value, np.bool_):
-            return bool(value)
-        if isinstance(value, np.integer):
-            return encode(int(value), _depth=_depth, _budget=budget)
-        if isinstance(value, np.floating):
-            return _float(float(value))
-        if isinstance(value, np.complexfloating):
-            return {"__complex__": [_float(float(value.real)), _float(float(value.imag))]}
-        if isinstance(value, np.ndarray):
-            if value.size > MAX_ELEMENTS:
-                raise Unsupported(f"the answer is too large (more than {MAX_ELEMENTS} numbers)")
-            kind = value.dtype.kind
-            if kind in "biuf":
-                budget.take(int(value.size))
-                data = value.astype(float if kind == "f" else value.dtype).tolist()
-                if kind == "f" and not bool(np.all(np.isfinite(value))):
-                    data = _map_nested(data, _float)
-                return {"__ndarray__": data, "shape": list(value.shape), "kind": kind}
-            if kind == "c":
-                budget.take(2 * int(value.size))
-                data = _map_nested(
-                    value.tolist(), lambda z: {"__complex__": [_float(z.real), _float(z.imag)]}
-                )
-                return {"__ndarray__": data, "shape": list(value.shape), "kind": kind}
-            if kind == "O":
-                items = [
-                    encode(v, _depth=_depth + 1, _budget=budget) for v in value.ravel().tolist()
-                ]
-                return {
-                    "__ndarray__": _reshape(items, value.shape),
-                    "shape": list(value.shape),
-                    "kind": kind,
-                }
-            raise Unsupported(f"an array of dtype {value.dtype} is not a numeric answer")
+    if np is None:
+        return _NOT_MINE
+    if isinstance(value, np.bool_):
+        return bool(value)
+    if isinstance(value, np.integer):
+        return encode(int(value), _depth=depth, _budget=budget)
+    if isinstance(value, np.floating):
+        return _float(float(value))
+    if isinstance(value, np.complexfloating):
+        return _complex(float(value.real), float(value.imag))
+    if isinstance(value, np.ndarray):
+        return _encode_ndarray(np, value, depth, budget)
+    return _NOT_MINE
+
+
+def _encode_ndarray(np, value, depth: int, budget: _Budget) -> dict:
+    """``{"__ndarray__": nested list, "shape", "kind"}`` for a numeric or object array."""
+    if value.size > MAX_ELEMENTS:
+        raise Unsupported(f"the answer is too large (more than {MAX_ELEMENTS} numbers)")
+    kind = value.dtype.kind
+    if kind in "biuf":
+        budget.take(int(value.size))
+        data = value.astype(float if kind == "f" else value.dtype).tolist()
+        if kind == "f" and not bool(np.all(np.isfinite(value))):
+            data = _map_nested(data, _float)
+    elif kind == "c":
+        budget.take(2 * int(value.size))
+        data = _map_nested(value.tolist(), lambda z: _complex(z.real, z.imag))
+    elif kind == "O":
+        items = [encode(v, _depth=depth + 1, _budget=budget) for v in value.ravel().tolist()]
+        data = _reshape(items, value.shape)
+    else:
+        raise Unsupported(f"an array of dtype {value.dtype} is not a numeric answer")
+    return {"__ndarray__": data, "shape": list(value.shape), "kind": kind}
+
+
+def _encode_container(value: Any, depth: int, budget: _Budget) -> Any:
+    """Lists and tuples (as lists), dictionaries with string keys (as ``__dict__``)."""
     if isinstance(value, (list, tuple)):
         if len(value) > MAX_ELEMENTS:
             raise Unsupported(f"the answer is too large (more than {MAX_ELEMENTS} items)")
-        return [encode(v, _depth=_depth + 1, _budget=budget) for v in list.__iter__(list(value))]
+        return [encode(v, _depth=depth + 1, _budget=budget) for v in list.__iter__(list(value))]
     if isinstance(value, dict):
         out = {}
         for k, v in dict.items(value):
             if not isinstance(k, str):
                 raise Unsupported("only dictionaries with string keys can be answers")
-            out[str.__str__(k)] = encode(v, _depth=_depth + 1, _budget=budget)
+            out[str.__str__(k)] = encode(v, _depth=depth + 1, _budget=budget)
         return {"__dict__": out}
+    return _NOT_MINE
+
+
+def _encode_sympy(value: Any, depth: int, budget: _Budget) -> Any:
+    """sympy matrices (as lists), booleans, numbers (as numbers), expressions (``__sympy__``
+    text, for display only)."""
     sp = _sympy_module()
-    if sp is not None and isinstance(value, sp.MatrixBase):  # mutable matrices are not sp.Basic
-        return [encode(row, _depth=_depth + 1, _budget=budget) for row in value.tolist()]
-    if sp is not None and isinstance(value, sp.logic.boolalg.BooleanAtom):
+    if sp is None:
+        return _NOT_MINE
+    if isinstance(value, sp.MatrixBase):  # mutable matrices are not sp.Basic
+        return [encode(row, _depth=depth + 1, _budget=budget) for row in value.tolist()]
+    if isinstance(value, sp.logic.boolalg.BooleanAtom):
         return bool(value)
-    if sp is not None and isinstance(value, sp.Basic):
-        if getattr(value, "is_number", False):
-            try:
-                z = complex(value.evalf())
-            except (TypeError, ValueError):
-                raise Unsupported("a sympy number in the answer has no numeric value") from None
-            if z.imag == 0 or z.imag != z.imag:
-                return _float(z.real)
-            return {"__complex__": [_float(z.real), _float(z.imag)]}
-        text = sp.sstr(value)
-        return {"__sympy__": text[:MAX_STRING]}
-    if callable(value):
-        return {"__callable__": str(getattr(value, "__name__", type(value).__name__))[:100]}
-    raise Unsupported(f"a value of type {type(value).__name__} cannot be graded")
+    if not isinstance(value, sp.Basic):
+        return _NOT_MINE
+    if getattr(value, "is_number", False):
+        try:
+            z = complex(value.evalf())
+        except (TypeError, ValueError):
+            raise Unsupported("a sympy number in the answer has no numeric value") from None
+        if z.imag == 0 or z.imag != z.imag:
+            return _float(z.real)
+        return _complex(z.real, z.imag)
+    return {"__sympy__": sp.sstr(value)[:MAX_STRING]}
 
 
 def _map_nested(data: Any, fn) -> Any:
@@ -222,6 +262,18 @@ def decode_argument(obj: Any) -> Any:
 
 def _fail(kind: str, message: str) -> dict:
     return {"ok": False, "error": kind, "message": message[:500]}
+
+
+def _exercise(exc: own_work.ExerciseError) -> dict:
+    """The response for a library implementation that is the exercise being evaluated."""
+    return {
+        "ok": False,
+        "error": "exercise",
+        "implementation": str(exc.implementation)[:300],
+        "question": str(exc.question)[:100],
+        "switched_off": bool(exc.switched_off),
+        "message": str(exc)[:500],
+    }
 
 
 def _lookup(namespace: dict, name: Any) -> tuple[bool, Any]:
@@ -319,6 +371,8 @@ def handle(request: dict, namespace: dict) -> dict:
             points = [[float(x) for x in p] for p in request.get("points", [])]
             return {"ok": True, "value": _evaluate_expression(value, symbols, points)}
         return _fail("bad_request", f"unknown op {op!r}")
+    except own_work.ExerciseError as exc:  # the marker of the exercise, by type, not by text
+        return _exercise(exc)
     except Unsupported as exc:
         return _fail("unsupported", str(exc))
     except NotImplementedError:

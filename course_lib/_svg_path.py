@@ -198,44 +198,10 @@ def _arc_segments(p0, rx, ry, phi_deg, large, sweep, p1, tol, where: str) -> lis
     hx, hy = R.T @ ((p0 - p1) / 2.0)  # F.6.5.1: (x1', y1')
     if not (math.isfinite(hx) and math.isfinite(hy)):
         raise ValueError(f"{where}: the arc's end points are too far apart for doubles")
-    q = ry / rx  # the ellipse's aspect, kept by the F.6.6 scaling
-    if q == 0 or not math.isfinite(q):
-        raise ValueError(
-            f"{where}: radii {rx:g} and {ry:g} differ by more than the range of doubles"
-        )
-    scale = 2.0 ** math.frexp(max(abs(hx), abs(hy)))[1]  # exact: a power of two
-    x1, y1, a_r, b_r = hx / scale, hy / scale, rx / scale, ry / scale
-    if not (math.isfinite(a_r) and math.isfinite(b_r)):
-        L = 0.0  # radii beyond the chord's scale by more than the range of doubles
-    elif a_r == 0 or b_r == 0:
-        L = math.inf  # radii below the chord's scale by more than the range of doubles
-    else:
-        a, b = x1 / a_r, y1 / b_r
-        L = math.hypot(a, b)  # sqrt(Λ) of F.6.6.2
-    if L == 0.0:
-        # Radii ~1e300 times the chord: the short arc is its chord to double precision;
-        # the long arc would reach beyond the doubles.
-        if large:
-            raise ValueError(
-                f"{where}: radii {rx:g}, {ry:g} are too large for the large arc between "
-                "these end points (it would leave the range of doubles)"
-            )
+    fit = _fitted_radii(hx, hy, rx, ry, large, where)
+    if fit is None:
         return [np.array([p0, p1])]
-    if L >= 1.0:  # F.6.6.3: radii too small, scaled up so that the ellipse just fits
-        if math.isfinite(L):
-            a_r, b_r = a_r * L, b_r * L
-        else:  # radii ~1e-300 of the chord: scale from the aspect instead
-            a_r = math.hypot(x1, y1 / q)
-            b_r = a_r * q
-            if not (math.isfinite(a_r) and b_r > 0):
-                raise ValueError(
-                    f"{where}: radii {rx:g} and {ry:g} scaled up to reach the end points "
-                    "leave the range of doubles"
-                )
-        a, b = x1 / a_r, y1 / b_r
-        L, f = math.hypot(a, b), 0.0
-    else:
-        f = math.sqrt((1.0 - L) * (1.0 + L))
+    scale, a, b, a_r, b_r, L, f = fit
     sign = -1.0 if large == sweep else 1.0  # F.6.5.2
     # Unit-circle coordinates of the start point and of end - start (exact: -2 (a, b)).
     ux, uy = a - sign * f * b / L, b + sign * f * a / L
@@ -265,6 +231,56 @@ def _arc_segments(p0, rx, ry, phi_deg, large, sweep, p1, tol, where: str) -> lis
     if not np.isfinite(pieces).all():
         raise ValueError(f"{where}: the arc leaves the range of doubles")
     return list(pieces)
+
+
+def _fitted_radii(hx: float, hy: float, rx: float, ry: float, large, where: str):
+    """The arc's ellipse in unit-chord coordinates (F.6.5.1-F.6.6.3), scale-free.
+
+    ``(hx, hy)`` is F.6.5.1's ``(x1', y1')``; ``rx, ry > 0``.  Returns ``(scale, a, b, a_r,
+    b_r, L, f)``: the power of two the lengths were divided by, the start point on the unit
+    circle before the centre shift (``a, b``), the radii as scaled up by F.6.6 if too small
+    (``a_r, b_r``), ``L = sqrt(Λ)`` and F.6.5.2's root ``f``; or ``None`` when the arc is its
+    chord to double precision (radii ~1e300 times the chord, short arc).
+    """
+    q = ry / rx  # the ellipse's aspect, kept by the F.6.6 scaling
+    if q == 0 or not math.isfinite(q):
+        raise ValueError(
+            f"{where}: radii {rx:g} and {ry:g} differ by more than the range of doubles"
+        )
+    scale = 2.0 ** math.frexp(max(abs(hx), abs(hy)))[1]  # exact: a power of two
+    x1, y1, a_r, b_r = hx / scale, hy / scale, rx / scale, ry / scale
+    if not (math.isfinite(a_r) and math.isfinite(b_r)):
+        L = 0.0  # radii beyond the chord's scale by more than the range of doubles
+    elif a_r == 0 or b_r == 0:
+        L = math.inf  # radii below the chord's scale by more than the range of doubles
+    else:
+        a, b = x1 / a_r, y1 / b_r
+        L = math.hypot(a, b)  # sqrt(Λ) of F.6.6.2
+    if L == 0.0:
+        # Radii ~1e300 times the chord: the short arc is its chord to double precision;
+        # the long arc would reach beyond the doubles.
+        if large:
+            raise ValueError(
+                f"{where}: radii {rx:g}, {ry:g} are too large for the large arc between "
+                "these end points (it would leave the range of doubles)"
+            )
+        return None
+    if L >= 1.0:  # F.6.6.3: radii too small, scaled up so that the ellipse just fits
+        if math.isfinite(L):
+            a_r, b_r = a_r * L, b_r * L
+        else:  # radii ~1e-300 of the chord: scale from the aspect instead
+            a_r = math.hypot(x1, y1 / q)
+            b_r = a_r * q
+            if not (math.isfinite(a_r) and b_r > 0):
+                raise ValueError(
+                    f"{where}: radii {rx:g} and {ry:g} scaled up to reach the end points "
+                    "leave the range of doubles"
+                )
+        a, b = x1 / a_r, y1 / b_r
+        L, f = math.hypot(a, b), 0.0
+    else:
+        f = math.sqrt((1.0 - L) * (1.0 + L))
+    return scale, a, b, a_r, b_r, L, f
 
 
 def _arc_error(h: float) -> float:
@@ -316,31 +332,7 @@ def _read(d: str, arcs: str, tol: float):
             closed = True
             cur, prev_kind = start.copy(), ""
             continue
-        new: list[np.ndarray]
-        if up == "L":
-            new = [np.array([cur, base + a[:2]])]
-        elif up == "H":
-            new = [np.array([cur, [a[0] + (cur[0] if rel else 0.0), cur[1]]])]
-        elif up == "V":
-            new = [np.array([cur, [cur[0], a[0] + (cur[1] if rel else 0.0)]])]
-        elif up == "C":
-            new = [np.array([cur, base + a[0:2], base + a[2:4], base + a[4:6]])]
-        elif up == "S":
-            c1 = 2 * cur - prev_ctrl if prev_kind == "C" else cur
-            new = [np.array([cur, c1, base + a[0:2], base + a[2:4]])]
-        elif up == "Q":
-            new = [np.array([cur, base + a[0:2], base + a[2:4]])]
-        elif up == "T":
-            c1 = 2 * cur - prev_ctrl if prev_kind == "Q" else cur
-            new = [np.array([cur, c1, base + a[0:2]])]
-        else:  # "A"
-            if arcs == "refuse":
-                raise ValueError(
-                    f"elliptical arc {cmd!r} at position {pos}: arcs are refused "
-                    "(arcs='refuse'); pass arcs='convert' to approximate them by cubics"
-                )
-            end = _finite(base + a[5:7], where)
-            new = _arc_segments(cur, a[0], a[1], a[2], a[3], a[4], end, tol, where)
+        new = _drawn(cmd, pos, a, cur, prev_ctrl, prev_kind, arcs, tol)
         for seg in new:
             _finite(seg, where)
         prev_kind = {"C": "C", "S": "C", "Q": "Q", "T": "Q"}.get(up, "")
@@ -350,6 +342,43 @@ def _read(d: str, arcs: str, tol: float):
         segs.extend(s for s in new if np.ptp(s, axis=0).any())
     end_subpath()
     return subpaths, skipped
+
+
+def _drawn(
+    cmd: str, pos: int, a: list, cur: np.ndarray, prev_ctrl, prev_kind: str, arcs: str, tol: float
+) -> list[np.ndarray]:
+    """The segments one drawing command (L H V C S Q T A, either case) adds after ``cur``.
+
+    ``prev_ctrl`` and ``prev_kind`` (``"C"``, ``"Q"`` or ``""``) are the previous command's
+    last inner control point and kind, reflected by S and T.
+    """
+    up, rel = cmd.upper(), cmd.islower()
+    base = cur if rel else np.zeros(2)
+    if up == "L":
+        return [np.array([cur, base + a[:2]])]
+    if up == "H":
+        return [np.array([cur, [a[0] + (cur[0] if rel else 0.0), cur[1]]])]
+    if up == "V":
+        return [np.array([cur, [cur[0], a[0] + (cur[1] if rel else 0.0)]])]
+    if up == "C":
+        return [np.array([cur, base + a[0:2], base + a[2:4], base + a[4:6]])]
+    if up == "S":
+        c1 = 2 * cur - prev_ctrl if prev_kind == "C" else cur
+        return [np.array([cur, c1, base + a[0:2], base + a[2:4]])]
+    if up == "Q":
+        return [np.array([cur, base + a[0:2], base + a[2:4]])]
+    if up == "T":
+        c1 = 2 * cur - prev_ctrl if prev_kind == "Q" else cur
+        return [np.array([cur, c1, base + a[0:2]])]
+    # "A"
+    if arcs == "refuse":
+        raise ValueError(
+            f"elliptical arc {cmd!r} at position {pos}: arcs are refused "
+            "(arcs='refuse'); pass arcs='convert' to approximate them by cubics"
+        )
+    where = f"command {cmd!r} at position {pos}"
+    end = _finite(base + a[5:7], where)
+    return _arc_segments(cur, a[0], a[1], a[2], a[3], a[4], end, tol, where)
 
 
 def _finite(p: np.ndarray, where: str) -> np.ndarray:

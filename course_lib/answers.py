@@ -71,13 +71,15 @@ __all__ = [
 class AnswerError(AssertionError):
     """The answer cannot be read as asked (its form, not its value); the message says why.
 
-    ``unanswered=True`` marks a placeholder (``...``) or a stub.
+    ``unanswered=True`` marks a placeholder (``...``) or a stub; ``exercise=True`` a library
+    implementation that is the exercise being checked (``own_work.ExerciseError``).
     """
 
-    def __init__(self, message: str, *, unanswered: bool = False) -> None:
+    def __init__(self, message: str, *, unanswered: bool = False, exercise: bool = False) -> None:
         super().__init__(message)
         self.message = message
         self.unanswered = unanswered
+        self.exercise = exercise
 
 
 NOT_ANSWERED = "not answered yet (replace the ... by your answer)."

@@ -21,7 +21,7 @@ where ``B_{i,k}`` are the partial Bell polynomials (Faà di Bruno's formula).
 * :func:`apply_beta_constraints` and :func:`solve_shape_parameters` are the
   numeric form (pure numpy, Bell polynomials; sympy is not imported).
 
-Lesson: ``notebooks/02_beta_constraints.ipynb``.
+Lesson: ``notebooks/03_beta_constraints.ipynb``.
 """
 
 from __future__ import annotations

@@ -33,7 +33,7 @@ Cubic G2 (seed 000 §10.2, steps 1a, 1b, 2)
 With β1 = 1 (and β2 = 0) both reduce to the uniform quadratic / cubic B-spline
 (test against scipy.interpolate.BSpline).
 
-Lesson: ``notebooks/06_beta_splines.ipynb``.
+Lesson: ``notebooks/08_beta_splines.ipynb``.
 """
 
 from __future__ import annotations
@@ -273,6 +273,13 @@ def quadratic_beta_spline(V: np.ndarray, beta1: float | np.ndarray = 1.0) -> Pie
     ValueError
         Fewer than 3 points, β1 <= 0 or wrong length (naming the joint), coincident
         consecutive control points (zero tangent at a junction).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> curve = quadratic_beta_spline(np.array([[0, 0], [1, 2], [3, 2], [4, 0]]), beta1=2.0)
+    >>> curve.n_segments, curve.degrees
+    (2, (2, 2))
     """
     own_work.require("course_lib.beta_splines.quadratic_beta_spline")
     P = as_points(V, "V", min_points=3)
@@ -325,6 +332,14 @@ def cubic_beta_spline(
         Fewer than 4 points; β1 <= 0 or wrong lengths (naming the vertex/joint); a leg
         whose ratio sums to zero (Barsky's ``δ = 0``, a true pole); γ undefined at both
         ends of a leg with different β1 (no limit); a zero tangent at a junction vertex.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> V = np.array([[0, 0], [1, 2], [3, 2], [4, 0], [6, 1]])
+    >>> curve = cubic_beta_spline(V, beta1=1.5, beta2=2.0)
+    >>> curve.n_segments, curve.degrees
+    (2, (3, 3))
     """
     own_work.require("course_lib.beta_splines.cubic_beta_spline")
     P = as_points(V, "V", min_points=4)

@@ -7,7 +7,7 @@ A Bézier curve of degree ``d`` with control polygon ``V_0, ..., V_d`` is
 for ``u`` in ``[0, 1]`` (seed 000, §8).  Control points are always stored as an
 array of shape ``(d + 1, dim)``, one point per row, ``dim`` in ``{2, 3}``.
 
-Lesson: ``notebooks/05_stitching_bezier_curves.ipynb`` (Bézier facts used for stitching).
+Lesson: ``notebooks/07_stitching_bezier_curves.ipynb`` (Bézier facts used for stitching).
 """
 
 from __future__ import annotations
@@ -121,6 +121,14 @@ def derivative_control_points(control_points: np.ndarray, k: int = 1) -> np.ndar
     Degree 0 (one control point, a constant curve) is allowed everywhere in this module:
     it evaluates to its point, its derivatives are zero, and it elevates to a polygon of
     repeated points.
+
+    Examples
+    --------
+    The hodograph of a quadratic is the line through ``2 (P1 - P0)`` and ``2 (P2 - P1)``:
+
+    >>> derivative_control_points([[0, 0], [1, 2], [2, 0]])
+    array([[ 2.,  4.],
+           [ 2., -4.]])
     """
     P = as_points(control_points, "control_points", min_points=1)
     k = check_integer(k, "k", minimum=0)
@@ -147,6 +155,16 @@ def evaluate(control_points: np.ndarray, u: float | np.ndarray, n: int = 0) -> n
     Returns
     -------
     ndarray of shape (dim,) or (m, dim)
+
+    Examples
+    --------
+    A quadratic's point and first derivative at its middle:
+
+    >>> P = [[0, 0], [1, 2], [2, 0]]
+    >>> evaluate(P, 0.5)
+    array([1., 1.])
+    >>> evaluate(P, 0.5, n=1)
+    array([2., 0.])
     """
     P = as_points(control_points, "control_points", min_points=1)
     n = check_integer(n, "n", minimum=0)
@@ -194,6 +212,15 @@ def elevate_degree(control_points: np.ndarray, times: int = 1) -> np.ndarray:
     Returns
     -------
     ndarray of shape (d + 1 + times, dim)
+
+    Examples
+    --------
+    A segment as a quadratic: the new middle point is the segment's midpoint.
+
+    >>> elevate_degree([[0, 0], [2, 2]])
+    array([[0., 0.],
+           [1., 1.],
+           [2., 2.]])
     """
     P = as_points(control_points, "control_points", min_points=1)
     times = check_integer(times, "times", minimum=0)
@@ -237,6 +264,16 @@ def subdivide(control_points: np.ndarray, u: float = 0.5) -> tuple[np.ndarray, n
     ------
     ValueError
         If ``u`` is not strictly between 0 and 1.
+
+    Examples
+    --------
+    >>> left, right = subdivide([[0, 0], [1, 2], [2, 0]])
+    >>> left
+    array([[0. , 0. ],
+           [0.5, 1. ],
+           [1. , 1. ]])
+    >>> right[0]  # both halves meet at the curve's midpoint
+    array([1., 1.])
     """
     u = check_finite_scalar(u, "u")
     if not 0.0 < u < 1.0:

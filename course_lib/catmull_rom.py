@@ -26,7 +26,7 @@ segment ``i`` is ``V_i, V_i + D_i^+/3, V_{i+1} - D_{i+1}^-/3, V_{i+1}``.
 The weights φ_{-1}, φ_2 are negative on ``(0, 1)``: Catmull-Rom curves do *not*
 have the convex hull property (test: ``::test_convex_hull_fails``).
 
-Lesson: ``notebooks/05_stitching_bezier_curves.ipynb``.
+Lesson: ``notebooks/07_stitching_bezier_curves.ipynb``.
 """
 
 from __future__ import annotations
@@ -71,6 +71,15 @@ def catmull_rom_blending(
     Returns
     -------
     ndarray of shape (4,) or (m, 4)
+
+    Examples
+    --------
+    At ``u = 0`` the curve is at ``V_i``; the weights always sum to 1:
+
+    >>> catmull_rom_blending(0.0) + 0.0
+    array([0., 1., 0., 0.])
+    >>> round(float(catmull_rom_blending(0.3, beta1=2.0).sum()), 12)
+    1.0
     """
     a = float(check_shape_parameters(beta1, "beta1", 1, positive=True)[0])
     b = (
@@ -136,6 +145,18 @@ def catmull_rom(V: np.ndarray, beta1: float | np.ndarray = 1.0) -> PiecewiseBezi
         large or small that the tangents overflow (never an inf in the result);
         a vanishing tangent ``D_j^+ = 0`` at an interpolated vertex (e.g. coincident
         consecutive control points), naming the vertex.
+
+    Examples
+    --------
+    Five points give two segments, interpolating ``V_1, V_2, V_3``:
+
+    >>> import numpy as np
+    >>> V = np.array([[0, 0], [1, 1], [2, 0], [3, 1], [4, 0]])
+    >>> curve = catmull_rom(V, beta1=2.0)
+    >>> curve.n_segments, curve.degrees
+    (2, (3, 3))
+    >>> curve.joint_points
+    array([[2., 0.]])
     """
     P = as_points(V, "V", min_points=4)
     m = P.shape[0] - 1

@@ -42,13 +42,13 @@ a factor 10 of ``rtol``, or the three disagree, the report says the joint is
 For a :class:`~course_lib.curve.PiecewiseBezier`, :func:`curve_continuity` uses the
 *global* parameter (knots): the knots change the C-order but never the G-order.
 
-Lesson: ``notebooks/02_beta_constraints.ipynb`` (the three characterizations agree).
+Lesson: ``notebooks/04_arc_length_and_theorem_1.ipynb`` (the three characterizations agree).
 """
 
 from __future__ import annotations
 
 import html
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
 import numpy as np
@@ -59,7 +59,13 @@ from ._validation import check_finite_scalar, check_integer, scaled_norm
 from .differential_geometry import _arc_length_derivatives_unit, _typical_speed
 from .parametrization import as_parametrization
 
-__all__ = ["CHARACTERIZATIONS", "JointReport", "curve_continuity", "joint_continuity"]
+__all__ = [
+    "CHARACTERIZATIONS",
+    "JointReport",
+    "curve_continuity",
+    "joint_continuity",
+    "joint_report",
+]
 
 #: Names of the three characterizations of G^n (seed 000 §4, §5, §6).
 CHARACTERIZATIONS = ("reparametrization", "beta_constraints", "arc_length")
@@ -196,12 +202,6 @@ class JointReport:
         )
 
 
-def _cross_norm(x: np.ndarray, y: np.ndarray) -> float:
-    if x.size == 2:
-        return abs(float(x[0] * y[1] - x[1] * y[0]))
-    return float(np.linalg.norm(np.cross(x, y)))
-
-
 def _end_derivs(c, at: float, n: int) -> np.ndarray:
     return np.stack([np.asarray(c.evaluate(at, k), dtype=float) for k in range(n + 1)])
 
@@ -209,11 +209,6 @@ def _end_derivs(c, at: float, n: int) -> np.ndarray:
 def _norms(x: np.ndarray) -> np.ndarray:
     """Plain norms: used on joints already scaled to a unit length scale (see _reports)."""
     return np.sqrt(np.einsum("...d,...d->...", x, x))
-
-
-def _leading(ok: np.ndarray) -> np.ndarray:
-    """Number of leading True rows per column of ``ok`` (shape (n, J))."""
-    return np.argmin(np.vstack([ok, np.zeros((1, ok.shape[1]), bool)]), axis=0)
 
 
 def _solve_betas(Q: np.ndarray, R: np.ndarray):
@@ -406,6 +401,18 @@ def joint_continuity(
         If ``q`` or ``r`` is not regular at the joint (first derivative vanishes):
         geometric continuity is defined for regular parametrizations only; or
         ``max_order`` above the cap.
+
+    Examples
+    --------
+    Two quadratics meeting at ``(2, 1)`` with parallel end tangents of lengths 2 and 4:
+    G1 with ``β1 = 2``, but not C1.
+
+    >>> from course_lib import PiecewiseBezier
+    >>> q = PiecewiseBezier([[[0, 0], [1, 1], [2, 1]]])
+    >>> r = PiecewiseBezier([[[2, 1], [4, 1], [5, 0]]])
+    >>> report = joint_continuity(q, r, max_order=2)
+    >>> report.g_order, report.c_order, report.betas[0]
+    (1, 0, 2.0)
     """
     own_work.require("course_lib.continuity.joint_continuity")
     q = as_parametrization(q, "q")
@@ -493,6 +500,13 @@ def curve_continuity(
     Derivatives are taken in the *global* parameter (segment ``i`` on
     ``[t_i, t_{i+1}]``, seed 004 §19.7), so the knots affect ``c_order`` but
     not ``g_order``.
+
+    Examples
+    --------
+    >>> from course_lib import PiecewiseBezier
+    >>> wave = PiecewiseBezier([[[0, 0], [1, 1], [2, 0]], [[2, 0], [3, -1], [4, 0]]])
+    >>> [(j.g_order, j.c_order) for j in curve_continuity(wave, max_order=2)]
+    [(1, 1)]
     """
     own_work.require("course_lib.continuity.curve_continuity")
     from .curve import PiecewiseBezier
@@ -518,3 +532,45 @@ def curve_continuity(
         atol,
         list(range(curve.n_joints)),
     )
+
+
+def joint_report(curve: object, j: int, max_order: int = 3) -> JointReport:
+    """The :class:`JointReport` of joint ``j`` of a PiecewiseBezier alone.
+
+    Only segments ``j`` and ``j + 1`` are analysed (with their knots, so in the global
+    parameter, as :func:`curve_continuity` does); a live demo asks this on every frame.
+
+    Parameters
+    ----------
+    curve : PiecewiseBezier
+    j : int
+        The joint, ``0 <= j < curve.n_joints``.
+    max_order : int
+        Highest order examined.
+
+    Raises
+    ------
+    TypeError
+        If ``curve`` is not a PiecewiseBezier.
+    ValueError
+        If ``j`` is not a joint of ``curve``.
+
+    Examples
+    --------
+    >>> from course_lib import PiecewiseBezier
+    >>> wave = PiecewiseBezier([[[0, 0], [1, 1], [2, 0]], [[2, 0], [3, -1], [4, 0]]])
+    >>> report = joint_report(wave, 0, max_order=2)
+    >>> report.index, report.g_order
+    (0, 1)
+    """
+    from .curve import PiecewiseBezier
+
+    if not isinstance(curve, PiecewiseBezier):
+        raise TypeError(f"curve must be a PiecewiseBezier, got {type(curve).__name__}")
+    j = check_integer(j, "j", minimum=0)
+    if j >= curve.n_joints:
+        raise ValueError(f"j must be < {curve.n_joints} (the curve's joints); got {j}")
+    k = curve.knots
+    pair = PiecewiseBezier(curve.segments[j : j + 2], k[j : j + 3] if curve.has_knots else None)
+    (rep,) = curve_continuity(pair, max_order=max_order)
+    return replace(rep, index=j)

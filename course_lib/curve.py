@@ -15,8 +15,8 @@ parameter), of any degree ``>= 1``.  A knot sequence ``t_0 < t_1 < ... < t_S``
 §19.7).  Without knots the curve uses ``t_i = i``.  Derivatives in the global
 parameter carry the chain-rule factor ``(t_{i+1} - t_i)^{-n}``.
 
-Lesson: ``notebooks/01_reparametrization.ipynb`` (piecewise curves and joints),
-``notebooks/04_g1_knot_bezier_splines.ipynb`` (the global parameter).
+Lesson: ``notebooks/01_parametric_continuity.ipynb`` (piecewise curves and joints),
+``notebooks/06_g1_knot_bezier_splines.ipynb`` (the global parameter).
 """
 
 from __future__ import annotations
@@ -712,6 +712,17 @@ class PiecewiseBezier:
         return PiecewiseBezier._fast(segs, self._knots if self.has_knots else None, self._info)
 
     def segment_curve(self, i: int) -> PiecewiseBezier:
-        """Segment ``i`` alone, as a one-segment curve."""
+        """Segment ``i`` alone, as a one-segment curve.
+
+        Examples
+        --------
+        With knots ``0, 1, 3`` the second segment spans ``[1, 3]``; on its own it runs on ``[0, 1]``:
+
+        >>> c = PiecewiseBezier([[[0, 0], [1, 1], [2, 0]], [[2, 0], [3, -1], [4, 0]]], knots=[0, 1, 3])
+        >>> c.domain, c.evaluate(2.0)
+        ((0.0, 3.0), array([ 3. , -0.5]))
+        >>> c.segment_curve(1).evaluate(0.5)
+        array([ 3. , -0.5])
+        """
         i = self._check_segment(i)
         return PiecewiseBezier._fast([self.segments[i]])

@@ -20,7 +20,7 @@ Every function accepts any object of the parametrization protocol (``CONTRIBUTIN
 ``(dim,)`` vector or a float, a 1-d ``t`` gives ``(m, dim)`` or ``(m,)``.
 Where a formula divides by ``|c'|`` and ``c'`` vanishes, a ``ValueError`` says so.
 
-Lesson: ``notebooks/03_curvature_of_plane_curves.ipynb`` (unit tangent, signed curvature, fundamental theorem).
+Lesson: ``notebooks/05_curvature_of_plane_curves.ipynb`` (unit tangent, signed curvature, fundamental theorem).
 """
 
 from __future__ import annotations
@@ -319,7 +319,20 @@ def signed_curvature(curve, t: float | np.ndarray) -> float | np.ndarray:
 
 
 def curvature(curve, t: float | np.ndarray) -> float | np.ndarray:
-    """Unsigned curvature ``|c' x c''| / |c'|^3`` = length of the curvature vector (2D or 3D)."""
+    """Unsigned curvature ``|c' x c''| / |c'|^3`` = length of the curvature vector (2D or 3D).
+
+    Examples
+    --------
+    The parabola ``y = x²`` (a quadratic Bézier curve) has curvature 2 at its vertex
+    ``Q(1/2) = (0, 0)``:
+
+    >>> from course_lib import PiecewiseBezier
+    >>> parabola = PiecewiseBezier([[[-1, 1], [0, -1], [1, 1]]])
+    >>> float(curvature(parabola, 0.5))
+    2.0
+    >>> float(curvature(PiecewiseBezier([[[0, 0], [1, 0], [2, 0]]]), 0.5))  # a straight line
+    0.0
+    """
     own_work.require("course_lib.differential_geometry.curvature")
     K = curvature_vector(curve, t)
     k = np.linalg.norm(np.atleast_2d(K), axis=-1)
@@ -398,6 +411,15 @@ def arc_length(curve, t0: float | None = None, t1: float | None = None) -> float
     for any other curve or sub-interval, Gauss-Legendre with 20 nodes per interval,
     bisected until two successive levels agree to 1e-13 (relative), on each smooth piece
     (split at the knots of a :class:`~course_lib.curve.PiecewiseBezier`).
+
+    Examples
+    --------
+    >>> from course_lib import PiecewiseBezier
+    >>> arc_length(PiecewiseBezier([[[0, 0], [3, 4]]]))
+    5.0
+    >>> tent = PiecewiseBezier([[[0, 0], [3, 4]], [[3, 4], [6, 0]]])
+    >>> arc_length(tent, 0.0, 1.0), arc_length(tent)
+    (5.0, 10.0)
     """
     own_work.require("course_lib.differential_geometry.arc_length")
     if t0 is None and t1 is None and type(curve) is PiecewiseBezier:

@@ -30,7 +30,7 @@ With ``β1 = 1, β2 = ... = βn = 0`` the basis is the uniform B-spline of degre
 ``n + 1`` (test against scipy).  For ``n = 1, 2`` it coincides with the geometric
 constructions of :mod:`course_lib.beta_splines` (independent cross-check).
 
-Lesson: ``notebooks/07_higher_order.ipynb``.
+Lesson: ``notebooks/09_higher_order.ipynb``.
 """
 
 from __future__ import annotations
@@ -412,6 +412,14 @@ def quartic_beta_spline(
 
     ``beta1, beta2, beta3``: scalars (global), or one value per interior joint (arrays of
     ``N - 5`` values; scalars are broadcast), see :func:`beta_spline`.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> V = np.array([[0, 0], [1, 2], [3, 2], [4, 0], [6, 1], [7, 3]])
+    >>> curve = quartic_beta_spline(V, beta1=1.0, beta2=0.0, beta3=0.0)
+    >>> curve.n_segments, curve.degrees
+    (2, (4, 4))
     """
     parts = [
         np.asarray(as_real_array(b, f"beta{i + 1}")) for i, b in enumerate((beta1, beta2, beta3))

@@ -14,7 +14,7 @@ where ``φ`` is the smoothstep of order ``n`` (``φ = 0`` left of ``1 - h``, ``�
 prescribed derivatives at 1, is the line for ``ū <= 1 - h`` and maps
 ``[1 - 1/β1, 1]`` onto ``[0, 1]``.
 
-Lecture: ``notebooks/02_beta_constraints.ipynb`` §1.
+Lecture: ``notebooks/03_beta_constraints.ipynb`` §5.
 """
 
 from __future__ import annotations
@@ -31,7 +31,13 @@ __all__ = ["onto_change_of_variables", "smoothstep"]
 
 def smoothstep(n: int) -> np.polynomial.Polynomial:
     """The polynomial ``S_n`` of degree ``2n + 1``: ``S(0) = 0``, ``S(1) = 1``, derivatives
-    ``1..n`` zero at 0 and 1 (``S_1 = 3s² - 2s³``)."""
+    ``1..n`` zero at 0 and 1 (``S_1 = 3s² - 2s³``).
+
+    Examples
+    --------
+    >>> print(smoothstep(1))
+    0.0 + 0.0·x + 3.0·x² - 2.0·x³
+    """
     coef = np.zeros(2 * n + 2)
     for k in range(n + 1):
         coef[n + 1 + k] = (-1) ** k * comb(n + k, k) * comb(2 * n + 1, n - k)

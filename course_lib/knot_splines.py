@@ -18,7 +18,7 @@ global parameter the chain-rule factors ``1/(t_{i+1} - t_i)`` cancel that ratio,
 the spline is C1 in ``t`` (seed 004 exercise 3).  Uniform knots give the midpoint rule
 of the C1 Bézier spline.
 
-Lesson: ``notebooks/04_g1_knot_bezier_splines.ipynb``.
+Lesson: ``notebooks/06_g1_knot_bezier_splines.ipynb``.
 """
 
 from __future__ import annotations
@@ -39,6 +39,12 @@ def knot_ratio_beta1(knots: np.ndarray) -> np.ndarray:
     -------
     ndarray of shape (L - 1,)
         Entry ``k`` belongs to joint ``k`` of the curve (the knot ``t_{k+1}``).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> knot_ratio_beta1(np.array([0.0, 1.0, 3.0, 4.0]))
+    array([2. , 0.5])
     """
     own_work.require("course_lib.knot_splines.knot_ratio_beta1")
     t = check_knots(knots, "knots")
@@ -118,6 +124,16 @@ def g1_knot_spline(d_points: np.ndarray, knots: np.ndarray) -> PiecewiseBezier:
         ``L`` cubic segments with ``knots`` as global parameter (C1 in ``t``).
         ``info``: ``beta1`` (knot ratios per joint), ``junction_points``
         (``p_3 .. p_{3L-3}``), ``d_points``.
+
+    Examples
+    --------
+    Two segments (knots 0, 1, 3) from ``2L + 2 = 6`` points:
+
+    >>> import numpy as np
+    >>> d = np.array([[0, 0], [1, 2], [3, 2], [4, 0], [6, 1], [7, 3]])
+    >>> curve = g1_knot_spline(d, np.array([0.0, 1.0, 3.0]))
+    >>> curve.n_segments, curve.degrees, curve.knots
+    (2, (3, 3), array([0., 1., 3.]))
     """
     own_work.require("course_lib.knot_splines.g1_knot_spline")
     D, t, L = _inputs(d_points, knots)

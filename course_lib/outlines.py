@@ -42,7 +42,7 @@ curvature, all vectorized.  Two verdicts:
 :func:`glyph_summary` and :func:`font_summary` count joints, corners, G1 and G2 smooth
 points per glyph and per font.
 
-Lesson: ``notebooks/09_are_letters_smooth.ipynb``.
+Lesson: ``notebooks/11_are_letters_smooth.ipynb``.
 """
 
 from __future__ import annotations
@@ -608,6 +608,14 @@ def classify_joints(
     Returns
     -------
     JointTable
+
+    Examples
+    --------
+    A right triangle from SVG path data: three corners.
+
+    >>> table = classify_joints(svg_outline("M 0 0 L 2 0 L 2 2 Z"))
+    >>> table.kind.tolist(), table.angle.tolist()
+    (['corner', 'corner', 'corner'], [90.0, 135.0, 135.0])
     """
     own_work.require("course_lib.outlines.classify_joints")
     if not isinstance(outline, Outline):

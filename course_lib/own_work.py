@@ -20,8 +20,17 @@ active while a frame of :func:`run_exercise` is on the calling thread's stack --
 ``guarded`` names the implementations -- and, for other threads and child processes, while it
 is listed in a process-wide set and in the environment variable ``COURSE_LIB_EXERCISE``.  The
 evaluator activates it at evaluation time and restores the state afterwards, so nothing a
-notebook sets before the check (a flag, a cleared list, a rebound name) switches it off, and
-a running frame's locals cannot be rewritten from Python.
+notebook sets before the check (a flag, a cleared list, a rebound name) switches it off.
+
+In the grader's sandbox none of that decides alone: the grader writes the homework it grades
+and the questions it is evaluating into a file the sandbox shows read-only at
+:data:`GRADER_STATE_FILE` (``tools/grading/sandbox.py`` binds it, ``runner.py`` writes it
+around each request), and :func:`require` reads it in every process there -- the kernel, its
+threads, a child started with an empty environment (``subprocess.run(..., env={})``,
+``multiprocessing`` spawn) -- so emptying the frame's ``guarded`` or ``_ACTIVE``, shedding the
+environment or hiding ``HOMEWORK`` changes nothing the grader counts.  What a notebook's code
+does to this module in the kernel is also flagged for the instructor by the grader's scan of
+the notebook (``tools/grading/tamper.py``).
 
 Value questions
 ---------------
@@ -38,9 +47,10 @@ module's ``own_work``, a guarded function's ``__code__``.
 
 What it does not stop (README, "The rule"): code in the same interpreter can always rewrite code
 in it -- a notebook that replaces the probe, ``__import__`` or this module's own references
-before the evaluation can call the library unguarded, and
-one that hides ``HOMEWORK`` (or computes in a thread) while it computes a value;
-copying a function's source text out of ``course_lib`` is copying, as from a book.
+before the evaluation can call the library unguarded (in the grader such code is flagged, and
+writing into this module's state costs the guarded questions), and in the student's own kernel
+(no state file) one that hides ``HOMEWORK`` or computes in a thread gets a value past the
+check; copying a function's source text out of ``course_lib`` is copying, as from a book.
 """
 
 from __future__ import annotations
@@ -66,9 +76,37 @@ __all__ = [
 
 ENV_VAR = "COURSE_LIB_EXERCISE"
 
+#: Where the grader's sandbox shows the grader's state: a read-only file, bind-mounted by
+#: ``tools/grading/sandbox.py`` and written only by the grader (outside the sandbox), naming the
+#: homework being graded and the function questions being evaluated at this moment
+#: (:func:`grader_state_text`).  Every process in the sandbox -- the kernel, its threads, a
+#: child started with an empty environment -- reads it in :func:`require`, so no state a
+#: submission can change (an environment variable, a list, a frame's locals, ``HOMEWORK``)
+#: decides whether a guard holds there.
+GRADER_STATE_FILE = "/run/course-lib/grading"
+
 
 class ExerciseError(RuntimeError):
-    """A library function was called while it is the exercise being evaluated."""
+    """A library function was called while it is the exercise being evaluated.
+
+    The exception itself is the marker "this is the exercise": the checks
+    (``AnswerProblem(..., exercise=True)``), the probe (response kind ``"exercise"``) and the
+    grader (``tools/grading/protocol.py``) recognise it by its type and read
+    ``implementation``, ``question`` and ``switched_off``, never its text.
+    """
+
+    def __init__(self, implementation: str, question: str, switched_off: bool = False) -> None:
+        self.implementation = str(implementation)
+        self.question = str(question)
+        self.switched_off = bool(switched_off)
+        super().__init__(
+            switched_off_message(self.implementation, self.question)
+            if self.switched_off
+            else exercise_message(self.implementation, self.question)
+        )
+
+    def __reduce__(self):  # pickled across processes (multiprocessing) with its fields
+        return (type(self), (self.implementation, self.question, self.switched_off))
 
 
 @dataclass(frozen=True)
@@ -334,6 +372,14 @@ def exercise_message(implementation: str, question: str) -> str:
     return f"{implementation} is the exercise of {question}: write it yourself"
 
 
+def switched_off_message(implementation: str, question: str) -> str:
+    """The sentence of :class:`ExerciseError` when a notebook switched a guard off."""
+    return (
+        f"the guard of {question} was switched off in this kernel ({implementation}): write it "
+        "yourself"
+    )
+
+
 def _owner(implementation: str, guarded: object) -> str | None:
     if isinstance(guarded, dict):
         return guarded.get(implementation)
@@ -348,8 +394,10 @@ def require(implementation: str) -> None:
     :data:`VALUE_EXERCISES`.  Where neither the checks nor the probe are imported (benchmarks,
     scripts) it returns at once; else it walks up the calling frames.
     """
+    if _GRADED:  # in the grader's sandbox: the grader's state decides, whatever else is set
+        _graded_guard(implementation)
     if implementation in _INHERITED:  # started by a process that was evaluating it
-        raise ExerciseError(exercise_message(implementation, _INHERITED[implementation]))
+        raise ExerciseError(implementation, _INHERITED[implementation])
     modules = sys.modules
     if not (_ACTIVE or "course_lib._probe" in modules or "course_lib.checks" in modules):
         return  # no evaluation can be running (benchmarks, plain library use): no frame walk
@@ -362,7 +410,7 @@ def require(implementation: str) -> None:
         if frame.f_code is _RUN_CODE:
             question = _owner(implementation, frame.f_locals.get("guarded"))
             if question is not None:
-                raise ExerciseError(exercise_message(implementation, question))
+                raise ExerciseError(implementation, question)
         if homeworks and value_question is None and frame.f_globals is not seen:
             seen = frame.f_globals  # consecutive frames of one module share their globals
             homework = seen.get("HOMEWORK")
@@ -371,9 +419,9 @@ def require(implementation: str) -> None:
         frame = frame.f_back
     for guarded in list(_ACTIVE):  # an evaluation on another thread of this process
         if implementation in guarded:
-            raise ExerciseError(exercise_message(implementation, guarded[implementation]))
+            raise ExerciseError(implementation, guarded[implementation])
     if value_question is not None:
-        raise ExerciseError(exercise_message(implementation, value_question))
+        raise ExerciseError(implementation, value_question)
 
 
 def _guarded(questions: tuple[str, ...]) -> dict[str, str]:
@@ -387,6 +435,65 @@ def _guarded(questions: tuple[str, ...]) -> dict[str, str]:
 
 
 _INHERITED = _from_environment()
+
+
+def grader_state_text(homework: str, questions: tuple[str, ...] = ()) -> str:
+    """The text of :data:`GRADER_STATE_FILE`: the homework graded, then the questions whose
+    exercises are being evaluated now (one line each).
+
+    Written by the grader (``tools/grading/runner.py``) before a request and after it.
+    """
+    for name, value in (("homework", homework), *(("questions", q) for q in questions)):
+        if not isinstance(value, str) or not value.isprintable() or "\n" in value:
+            raise ValueError(f"{name} must be a one-line string, got {value!r}")
+    return "\n".join([homework, *questions]) + "\n"
+
+
+def _read_state() -> tuple[str, tuple[str, ...]] | None:
+    """``(homework, questions)`` from :data:`GRADER_STATE_FILE`, or None if unreadable."""
+    try:
+        fd = _OS_OPEN(GRADER_STATE_FILE, _O_RDONLY)
+        try:
+            data = _OS_READ(fd, 65536)
+        finally:
+            _OS_CLOSE(fd)
+        lines = [line.strip() for line in data.decode("utf-8").splitlines()]
+    except (OSError, UnicodeDecodeError):
+        return None
+    return (lines[0], tuple(lines[1:])) if lines else ("", ())
+
+
+def _any_question(implementation: str) -> str | None:
+    """The first question, function or value, that ``implementation`` is the exercise of."""
+    for table in (EXERCISES, VALUE_EXERCISES):
+        for q, e in table.items():
+            if implementation in e.implementations:
+                return q
+    return None
+
+
+def _graded_guard(implementation: str) -> None:
+    """In the grader's sandbox: raise if the grader's state says ``implementation`` is guarded.
+
+    An unreadable state (a submission that used up its file descriptors) guards everything.
+    """
+    state = _read_state()
+    if state is None:
+        question = _any_question(implementation)
+        if question is not None:
+            raise ExerciseError(implementation, question)
+        return
+    homework, questions = state
+    question = _guarded(questions).get(implementation) or _VALUE_GUARDS.get(
+        (homework, implementation)
+    )
+    if question is not None:
+        raise ExerciseError(implementation, question)
+
+
+_OS_OPEN, _OS_READ, _OS_CLOSE, _O_RDONLY = os.open, os.read, os.close, os.O_RDONLY
+#: In the grader's sandbox (its state file is there from the sandbox's start, or never)
+_GRADED = os.path.isfile(GRADER_STATE_FILE)
 
 
 def _intact(dotted: str) -> bool:
@@ -408,16 +515,14 @@ def _check_intact(guarded: Mapping[str, str]) -> None:
     me = sys.modules.get(__name__)
     switched_off = (
         me is None
+        or getattr(me, "_GRADED", None) is not os.path.isfile(GRADER_STATE_FILE)
         or getattr(me, "require", None) is not _REQUIRE
         or _REQUIRE.__code__ is not _REQUIRE_CODE
         or getattr(me, "_getframe", None) is not _GETFRAME
     )
     for dotted, question in guarded.items():
         if switched_off or not _intact(dotted):
-            raise ExerciseError(
-                f"the guard of {question} was switched off in this kernel ({dotted}): write it "
-                "yourself"
-            )
+            raise ExerciseError(dotted, question, switched_off=True)
 
 
 def run_exercise(

@@ -16,7 +16,7 @@ cached) or from numpy callables, one per derivative order.
 
 A parametrization is a *function*; the curve is its image (seed 000 §1-2, §4).
 
-Lesson: ``notebooks/01_reparametrization.ipynb`` (seed 000 Examples 1-2).
+Lesson: ``notebooks/01_parametric_continuity.ipynb`` (seed 000 Examples 1-2).
 """
 
 from __future__ import annotations

@@ -18,7 +18,7 @@ curve) when ``Q~ = Q o f`` for a regular ``f: [ũ_0, ũ_f] -> [u_0, u_f]`` onto,
 Derivative vectors are not intrinsic (they change under reparametrization); the unit
 tangent and the curvature are (seed 000 §4).
 
-Lesson: ``notebooks/01_reparametrization.ipynb``.
+Lesson: ``notebooks/02_reparametrization.ipynb``.
 """
 
 from __future__ import annotations
@@ -397,6 +397,15 @@ def faa_di_bruno(outer_derivs: np.ndarray, inner_derivs: np.ndarray) -> np.ndarr
     -------
     ndarray shaped like ``outer_derivs``
         Row ``i - 1`` is ``(g o f)^{(i)}(t)``.
+
+    Examples
+    --------
+    ``g(x) = x²`` after ``f(t) = 2t``, at ``t = 1`` (``f = 2``, so ``g' = 4``, ``g'' = 2``):
+    ``(g o f)(t) = 4t²`` has derivatives 8 and 8 there.
+
+    >>> import numpy as np
+    >>> faa_di_bruno(np.array([4.0, 2.0]), np.array([2.0, 0.0]))
+    array([8., 8.])
     """
     own_work.require("course_lib.reparametrization.faa_di_bruno")
     outer = as_real_array(outer_derivs, "outer_derivs", "an array of derivatives")
@@ -460,6 +469,18 @@ def are_equivalent(
     ----------
     rtol : float
         Relative tolerance, scaled by the length of the curve.
+
+    Examples
+    --------
+    A quadratic run twice as fast, on ``[0, 1/2]``, is the same oriented curve:
+
+    >>> from course_lib import PiecewiseBezier
+    >>> q = PiecewiseBezier([[[0, 0], [1, 2], [2, 0]]])
+    >>> fast = Reparametrized(q, ChangeOfVariables.affine((0.0, 0.5), (0.0, 1.0)))
+    >>> fast.evaluate(0.25), fast.evaluate(0.25, 1)  # Q(1/2), and twice Q'(1/2)
+    (array([1., 1.]), array([4., 0.]))
+    >>> are_equivalent(q, fast).equivalent
+    True
     """
     from .differential_geometry import arc_length, parameter_at_arc_length
 

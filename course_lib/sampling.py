@@ -30,6 +30,16 @@ def segment_grid(curve, per_segment: int) -> np.ndarray:
 
     Row ``i`` runs from ``t_i`` to (just before) ``t_{i+1}``, so evaluating row ``i``
     gives segment ``i`` only, including its own limits at both joints.
+
+    Examples
+    --------
+    Row 0 ends a hair before the joint ``t = 1`` (printed ``1.``), where row 1 starts:
+
+    >>> from course_lib import PiecewiseBezier
+    >>> tent = PiecewiseBezier([[[0, 0], [3, 4]], [[3, 4], [6, 0]]])
+    >>> segment_grid(tent, 3)
+    array([[0. , 0.5, 1. ],
+           [1. , 1.5, 2. ]])
     """
     per_segment = check_integer(per_segment, "per_segment", minimum=2)
     k = np.asarray(curve.knots, dtype=float)

@@ -13,9 +13,9 @@ Conventions
     then hold for the *inverse* change of variables, so 001's β's are
     ``inverse_betas`` of 000's (and vice versa: the map is an involution).
 
-Lectures: ``notebooks/02_beta_constraints.ipynb`` (conventions),
-``notebooks/06_beta_splines.ipynb`` (seed 000 §10), ``notebooks/07_higher_order.ipynb``
-(seed 001 Ex. 2.1), ``notebooks/04_g1_knot_bezier_splines.ipynb`` (seed 004 §19.6).
+Lectures: ``notebooks/03_beta_constraints.ipynb`` (conventions),
+``notebooks/08_beta_splines.ipynb`` (seed 000 §10), ``notebooks/09_higher_order.ipynb``
+(seed 001 Ex. 2.1), ``notebooks/06_g1_knot_bezier_splines.ipynb`` (seed 004 §19.6).
 """
 
 from __future__ import annotations
@@ -52,6 +52,13 @@ def inverse_betas(betas: Sequence[object]) -> tuple:
     ------
     ValueError
         If not 1 to 4 values are given, or β1 is a number ``<= 0``.
+
+    Examples
+    --------
+    >>> inverse_betas([2.0, 1.0])
+    (0.5, -0.125)
+    >>> inverse_betas(inverse_betas([2.0, 1.0]))
+    (2.0, 1.0)
     """
     b = list(betas)
     if not 1 <= len(b) <= 4:

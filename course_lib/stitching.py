@@ -21,7 +21,7 @@ orders ``0..n`` (seed 000 eq. (6)) with the Bézier end derivatives, one point p
 ``W_i = (d-i)!/d! r^{(i)}(0) - sum_{j<i} (-1)^{i-j} C(i, j) W_j``; for ``n = 1, 2`` it is
 eq. (10) and (11a).
 
-Lesson: ``notebooks/05_stitching_bezier_curves.ipynb``.
+Lesson: ``notebooks/07_stitching_bezier_curves.ipynb``.
 """
 
 from __future__ import annotations
@@ -152,6 +152,16 @@ def g1_stitch(V: np.ndarray, beta1: float, W_rest: np.ndarray) -> PiecewiseBezie
     -------
     PiecewiseBezier
         ``info``: ``beta1`` (one value), ``W01`` (the constructed ``W_0, W_1``).
+
+    Examples
+    --------
+    ``W_1`` goes on the ray from ``V_2`` through ``V_3``, ``β1`` times as far:
+
+    >>> import numpy as np
+    >>> V = np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 1.0], [3.0, 0.0]])
+    >>> curve = g1_stitch(V, 2.0, np.array([[7.0, 3.0], [8.0, 0.0]]))
+    >>> curve.segments[1][1]
+    array([ 5., -2.])
     """
     own_work.require("course_lib.stitching.g1_stitch")
     P = _polygon(V, min_points=2)
@@ -176,6 +186,18 @@ def g2_stitch(
     PiecewiseBezier
         ``info``: ``beta1``, ``beta2`` (one value each), ``W012``, and Farin-Boehm's
         ``T`` and ``gamma`` when γ is defined.
+
+    Examples
+    --------
+    With ``β1 = 1`` and ``β2 = 0`` G2 stitching is C2 stitching (the last point is free):
+
+    >>> import numpy as np
+    >>> V = np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 1.0], [3.0, 0.0]])
+    >>> g2_stitch(V, 1.0, 0.0, np.array([[6.0, 0.0]])).segments[1]
+    array([[ 3.,  0.],
+           [ 4., -1.],
+           [ 5., -3.],
+           [ 6.,  0.]])
     """
     own_work.require("course_lib.stitching.g2_stitch")
     P = _polygon(V)

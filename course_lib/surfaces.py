@@ -23,7 +23,7 @@ partial derivatives ``u^{(h,l)}, v^{(h,l)}`` (``1 <= h + l <= n``) that appear i
 partials of ``G(u(s, t), v(s, t))`` of orders ``1..n``: seed 001 §3 states there are
 ``n(n + 3)`` shape functions for G^n.
 
-Lesson: ``notebooks/08_surfaces.ipynb``.
+Lesson: ``notebooks/10_surfaces.ipynb``.
 """
 
 from __future__ import annotations
@@ -198,6 +198,16 @@ def tangent_plane_continuity(
         Number of ``v`` values in ``[0, 1]``.
     rtol : float
         Relative tolerance for the gap (times the patches' size) and the angle (radians).
+
+    Examples
+    --------
+    A flat patch and its G1 neighbour (``α = 1``, ``β = 0``), bent up beyond the first row:
+
+    >>> import numpy as np
+    >>> F = BezierPatch(np.array([[[i, j, 0.0] for j in range(3)] for i in range(3)]))
+    >>> G = g1_neighbour_patch(F, np.array([[[3.0, j, 1.0] for j in range(3)]]))
+    >>> tangent_plane_continuity(F, G).g1
+    True
     """
     for name, X in (("F", F), ("G", G)):
         if not isinstance(X, BezierPatch):
@@ -285,6 +295,11 @@ def count_shape_functions(n: int) -> int:
     Differentiates ``G(u(s, t), v(s, t))`` (undefined ``G, u, v``) in every way of
     total order ``1..n`` and counts the distinct partial derivatives
     ``u^{(h,l)}, v^{(h,l)}`` that occur.  The seed states ``n(n + 3)``.
+
+    Examples
+    --------
+    >>> [count_shape_functions(n) for n in (1, 2, 3)]
+    [4, 10, 18]
     """
     import sympy as sp
 

@@ -1,4 +1,4 @@
-"""What tests of homework share: loading tools and hidden tests by path, and per-student variants.
+"""What tests of homework share: loading hidden tests by path, and per-student variants.
 
 A :class:`VariantHomework` holds one homework's hidden tests, 1,000 student codes made with a
 test secret, its grading through :class:`LocalStudent` on a variant's data, and the solution
@@ -16,24 +16,24 @@ import numpy as np
 import pytest
 
 from course_lib import variants
+from tools import build_homework as build
+from tools.grading.protocol import LocalStudent, run_question
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "tools"))
-from grading.protocol import LocalStudent, run_question  # noqa: E402
 
 SECRET = b"a test secret of the course, 32b"
 
 
 def load(name: str, path: Path):
-    """Import a module from its file (tools and hidden tests are not packages)."""
+    """Load a file that is data, not part of a package: a hidden-test file (the grader reads it
+    by path too), a fixture module, a configuration file.  The course's code imports as usual
+    (``from tools import grade``)."""
     spec = importlib.util.spec_from_file_location(name, path)
     module = importlib.util.module_from_spec(spec)
     sys.modules[name] = module
     spec.loader.exec_module(module)
     return module
 
-
-build = load("build_homework_variants", ROOT / "tools" / "build_homework.py")
 
 
 class VariantHomework:

@@ -16,26 +16,24 @@ from __future__ import annotations
 
 import functools
 import math
-import sys
 from pathlib import Path
 
 import matplotlib
 import numpy as np
 import pytest
 import sympy as sp
+from _homework_support import load
 
 matplotlib.use("Agg")
 
 from course_lib import answers, variants
 from course_lib.checks import HOMEWORKS, check, questions, registry
+from tools import build_homework as build
+from tools.grading.protocol import LocalStudent, run_question
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "tools"))
-from _homework_support import load  # noqa: E402
-from grading.protocol import LocalStudent, run_question  # noqa: E402
 
 HIDDEN = {hw: load(f"hidden_{hw}", ROOT / "solutions" / "hidden_tests" / f"{hw}.py") for hw in HOMEWORKS}
-build = load("build_homework_eq", ROOT / "tools" / "build_homework.py")
 
 B1, B2, B3, B4 = sp.symbols("beta1:5")
 BP1, BP2, BP3 = sp.symbols("beta1:4", positive=True)
@@ -640,9 +638,8 @@ def test_the_check_and_the_grader_read_the_same_plain_data():
     """``answers.plain`` (check side) == the protocol's decoding (grader side), type and value."""
     import json
 
-    from grading.protocol import decode_value
-
     from course_lib import _probe
+    from tools.grading.protocol import decode_value
 
     values = [
         2.5, np.float32(1.5), np.int64(3), np.array([2.5]), [1, 2.0], (1, (2, 3)), sp.Rational(1, 3),

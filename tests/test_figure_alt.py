@@ -123,9 +123,7 @@ def test_hook_shows_the_alt_text_under_the_figure(monkeypatch):
 
 
 def test_homework_builder_turns_alt_lines_into_metadata(tmp_path):
-    from _homework_support import load
-
-    bh = load("build_homework_alt", ROOT / "tools" / "build_homework.py")
+    from tools import build_homework as bh
     src = tmp_path / "hw99_x.py"
     src.write_text(
         "# %%\n### ALT A grey polygon and a blue curve\n### ALT through its ends.\nx = 1\n",
@@ -140,9 +138,7 @@ def test_homework_builder_turns_alt_lines_into_metadata(tmp_path):
 
 
 def test_site_pages_show_the_alt_text_as_a_caption():
-    from _homework_support import load
-
-    bs = load("build_site_alt", ROOT / "tools" / "build_site.py")
+    from tools import build_site as bs
     png = {"output_type": "display_data", "data": {"image/png": "AA=="}, "metadata": {}}
     nb = {
         "cells": [

@@ -17,15 +17,14 @@ from pathlib import Path
 
 import nbformat
 import pytest
-from _homework_support import load
 
 from course_lib.submit import manifest_of, notebook_digest, submit
+from tools import grade
 
 ROOT = Path(__file__).resolve().parents[1]
 HIDDEN = ROOT / "solutions" / "hidden_tests" / "hw01.py"
 NAME = "hw01_reparametrization.ipynb"
 
-grade = load("grade_gb", ROOT / "tools" / "grade.py")
 
 pytestmark = [pytest.mark.slow, pytest.mark.timeout(300)]
 
@@ -154,7 +153,7 @@ def test_only_regrades_one_student_and_keeps_the_other_rows(course, canvas, tmp_
 
 def _layout(canvas, roster_path, fmt: str) -> list[dict]:
     """The same graded results in another layout (no regrading: the tables are pure)."""
-    from grading import reports
+    from tools.grading import reports
 
     tests = grade.HiddenTests.load(HIDDEN)
     results = grade.load_previous(canvas, tests)
@@ -186,7 +185,7 @@ def test_dask_executor_gives_the_same_scores(course, canvas, tmp_path):
 
 
 def test_deadline_and_penalty_are_validated():
-    from grading import reports
+    from tools.grading import reports
 
     with pytest.raises(SystemExit, match="ISO 8601"):
         reports.parse_deadline("next friday")
@@ -200,7 +199,7 @@ def test_deadline_and_penalty_are_validated():
 
 def test_summary_flags_a_question_whose_variants_differ_in_difficulty():
     """Issue 19: success rates per kind of variant; a wide spread is flagged."""
-    from grading import reports
+    from tools.grading import reports
 
     tests = grade.HiddenTests.load(HIDDEN)
     results, labels = [], {}

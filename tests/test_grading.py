@@ -20,13 +20,13 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import pytest
-from _homework_support import load
+
+from tools import grade
 
 ROOT = Path(__file__).resolve().parents[1]
 FIXTURES = ROOT / "tests" / "fixtures" / "submissions" / "hw01"
 HIDDEN = ROOT / "solutions" / "hidden_tests"
 
-grade = load("grade", ROOT / "tools" / "grade.py")
 
 pytestmark = [pytest.mark.slow, pytest.mark.timeout(180)]
 # the sandbox where it works (make test installs bubblewrap), else unsandboxed (macOS)

@@ -7,10 +7,13 @@ One batch with small limits (``--output-limit``, ``--tmp-size``, ``--disk``, ``-
   never read: the secret appears in no file the grader wrote;
 * the victims keep full marks and their own, canonical feedback;
 * every hostile submission that is graded is the solution plus an attack: it keeps full marks
-  (its honest work) and its feedback names the limit its attack met;
+  (its honest work) and its feedback names the limit its attack met -- also when its code
+  caught the error (a refused fork, a full /tmp, a MemoryError): the sandbox's own counters
+  name it, in the feedback and in the status column, for that submission only;
 * names: one feedback file per student, distinct ignoring case; no CSV cell is a formula;
 * nothing outside the sandbox is written: the submissions are byte-identical, the job root is
-  empty afterwards, no job folder is still mounted, no control group is left.
+  empty afterwards, no job folder is still mounted, no control group of this run is left (the
+  groups another grader on the host has made are not this run's: ``sandbox.RUN_PREFIX``).
 
 Needs bubblewrap; skipped with the reason otherwise.  Run it under ``flock /tmp/heavy.lock``.
 """
@@ -20,21 +23,19 @@ from __future__ import annotations
 import csv
 import hashlib
 import os
-import sys
 from pathlib import Path
 
 import nbformat
 import pytest
 from _homework_support import load
 
+from tools import grade
+
 ROOT = Path(__file__).resolve().parents[1]
 HIDDEN = ROOT / "solutions" / "hidden_tests" / "hw01.py"
 SOLUTION = ROOT / "solutions" / "hw01_reparametrization.ipynb"
 
-sys.path.insert(0, str(ROOT / "tests" / "fixtures" / "redteam"))
-import hostile_files  # noqa: E402
-
-grade = load("grade_hostile", ROOT / "tools" / "grade.py")
+hostile_files = load("hostile_files", ROOT / "tests" / "fixtures" / "redteam" / "hostile_files.py")
 safe_names = grade.safe_names
 
 ok, why = grade.sandbox.bwrap_works()
@@ -52,22 +53,27 @@ LIMIT_NOTES = {
     "hogs_cpu": [],
     "huge_output": [f"printed more than {OUTPUT_LIMIT} bytes of output"],
     "comm_flood": [f"widgets sent more than {OUTPUT_LIMIT} bytes"],
+    "caught_fork": [],
+    "caught_tmp": [],
+    "caught_memory": [],
 }
+#: the flag in the status column (and a sentence in the feedback) from the sandbox's counters
+LIMIT_FLAGS = {
+    "fills_tmp": "reached the /tmp limit (4 MB)",
+    "fills_shm": "reached the /dev/shm limit (4 MB)",
+    "fills_disk": "reached the disk limit (16 MB)",
+    "hogs_cpu": "reached the process limit (64)",
+    "caught_fork": "reached the process limit (64)",
+    "caught_tmp": "reached the /tmp limit (4 MB)",
+    "caught_memory": "reached the memory limit (2048 MB)",
+}
+ALL_ATTACKS = {**hostile_files.ATTACKS, **hostile_files.CAUGHT}
 
 
 def _with_attack(source: str) -> bytes:
     nb = nbformat.read(SOLUTION, as_version=4)
     nb.cells.append(nbformat.v4.new_code_cell(source))
     return nbformat.writes(nb).encode()
-
-
-def _cgroups() -> set[str]:
-    found = set()
-    for ctrl in ("pids", "cpu", "memory"):
-        base = Path("/sys/fs/cgroup") / ctrl
-        if base.is_dir():
-            found |= {str(p) for p in base.rglob("course-grader-*")}
-    return found
 
 
 def _tree(folder: Path) -> dict[str, str]:
@@ -93,7 +99,6 @@ def batch(tmp_path_factory):
     kinds = hostile_files.lay_out(subs, outside, solution, _with_attack)
     kinds.update(correct_1="victim", correct_2="victim")
     before = {**_tree(subs), **_tree(outside)}
-    groups_before = _cgroups()
     jobs = tmp_path_factory.mktemp("jobroot") / "jobs"
     out = tmp_path_factory.mktemp("grades")
     code = grade.main(
@@ -108,7 +113,7 @@ def batch(tmp_path_factory):
     return {
         "code": code, "subs": subs, "outside": outside, "out": out, "kinds": kinds,
         "rows": rows, "before": before, "after": {**_tree(subs), **_tree(outside)},
-        "jobs": jobs, "new_groups": _cgroups() - groups_before,
+        "jobs": jobs, "left_groups": grade.sandbox.run_groups(),
     }  # fmt: skip
 
 
@@ -144,16 +149,28 @@ def test_victims_keep_full_marks_and_their_own_feedback(batch):
         assert float(batch["rows"][name]["total"]) == tests.max_points
         full = grade.Result(name, dict(tests.points), dict.fromkeys(tests.points, ""),
                             fractions=dict.fromkeys(tests.points, 1.0))  # fmt: skip
-        assert _feedback(batch, name) == grade.feedback_markdown(full, tests)
+        assert _feedback(batch, name) == grade.reports.feedback_markdown(full, tests)
 
 
-@pytest.mark.parametrize("attack", sorted(hostile_files.ATTACKS))
+@pytest.mark.parametrize("attack", sorted(ALL_ATTACKS))
 def test_each_attack_costs_only_its_own_cell_and_names_the_limit(batch, attack):
     row = batch["rows"][attack]
     assert float(row["total"]) == 11, row  # the solution's honest work, all of it
     text = _feedback(batch, attack)
     for fragment in LIMIT_NOTES[attack]:
         assert fragment in text, (attack, text)
+    flag = LIMIT_FLAGS.get(attack)
+    if flag is not None:  # counted by the sandbox, also when the code caught the error
+        assert flag in row["status"].split("; "), (attack, row["status"])
+        assert f"the sandbox {flag}: " in text or "disk" in flag, (attack, text)
+
+
+def test_limits_met_are_counted_against_their_submission_alone(batch):
+    for student, kind in batch["kinds"].items():
+        if kind in ("victim", "name"):
+            row = batch["rows"][_shown(student)]
+            assert "reached" not in row["status"], (student, row["status"])
+            assert "the sandbox reached" not in _feedback(batch, student), student
 
 
 def test_names_are_written_whatever_their_bytes_case_or_first_character(batch):
@@ -175,4 +192,5 @@ def test_nothing_outside_the_sandbox_was_written(batch):
     assert batch["before"] == batch["after"]
     assert list(batch["jobs"].iterdir()) == []
     assert str(batch["jobs"]) not in Path("/proc/mounts").read_text()
-    assert batch["new_groups"] == set()
+    assert grade.sandbox.RUN_PREFIX.startswith("course-grader-")
+    assert batch["left_groups"] == set()

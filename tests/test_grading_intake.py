@@ -20,13 +20,14 @@ from pathlib import Path
 
 import nbformat
 import pytest
-from _homework_support import load
+
+from tools import grade
+from tools.grading import runner
 
 ROOT = Path(__file__).resolve().parents[1]
 HIDDEN = ROOT / "solutions" / "hidden_tests" / "hw01.py"
 
-grade = load("grade_intake", ROOT / "tools" / "grade.py")
-intake, safe_names, runner = grade.intake, grade.safe_names, grade.sys.modules["grading.runner"]
+intake, safe_names = grade.intake, grade.safe_names
 
 SECRET_TEXT = "course-secret-Zq7Vw2Lp9Xk4Rt8Yb3Nm6"
 

@@ -16,6 +16,7 @@ import pytest
 from _homework_support import differ, load
 
 from course_lib import variants
+from tools import grade
 
 ROOT = Path(__file__).resolve().parents[1]
 HOMEWORKS = ("hw01", "hw02", "hw03", "hw04", "hw05")
@@ -44,7 +45,6 @@ FULL = {"hw01": 11, "hw02": 10, "hw03": 15, "hw04": 11, "hw05": 7}
 DIFFER = {"hw05": 0, "hw02": 2}
 
 
-grade = load("grade_variants", ROOT / "tools" / "grade.py")
 
 pytestmark = [pytest.mark.slow, pytest.mark.timeout(300)]
 

@@ -25,13 +25,13 @@ import pytest
 from _homework_support import load
 
 from course_lib.checks import HOMEWORKS, questions, registry
+from tools import build_homework as build
 
 ROOT = Path(__file__).resolve().parents[1]
 
 
 
 
-build = load("build_homework", ROOT / "tools" / "build_homework.py")
 SOURCES = build.sources()
 HIDDEN = sorted((ROOT / "solutions" / "hidden_tests").glob("hw*.py"))
 

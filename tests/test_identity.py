@@ -14,14 +14,13 @@ from pathlib import Path
 
 import nbformat
 import pytest
-from _homework_support import load
 
 from course_lib import variants
 from course_lib.submit import MANIFEST_KEY, notebook_digest
+from tools import grade
+from tools.grading import identity, intake, reports
 
 ROOT = Path(__file__).resolve().parents[1]
-grade = load("grade_identity", ROOT / "tools" / "grade.py")
-from grading import identity, intake, reports  # noqa: E402  (tools/ is on the path once grade is loaded)
 
 SECRET = b"a course secret for identity tests"
 DEADLINE = datetime(2026, 12, 8, 22, 59, tzinfo=timezone.utc)

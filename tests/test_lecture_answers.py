@@ -65,6 +65,24 @@ def _g2_not_c1():
     return "c"
 
 
+def _corner_pair():
+    # q(u) = (u³, -u³), r(t) = (t³, t³): every derivative of order 0..2 is 0 at the joint (C2,
+    # velocity 0, so not regular); the pieces lie on the lines y = -x (x < 0) and y = x (x > 0):
+    # a 90° corner. By hand, sampled: the chords to the joint are perpendicular.
+    q_end, r_start = np.array([-0.5**3, 0.5**3]), np.array([0.5**3, 0.5**3])
+    assert np.isclose(q_end @ r_start, 0)
+    return "a, c"
+
+
+def _same_tangent_other_curvature():
+    # Theorem 1 (Barsky & DeRose 1988, §6): G2 <=> common unit tangent and curvature vector.
+    # Curvatures 1 and 2 (same side): the curvature vectors differ, the tangents agree: G1 only;
+    # no β2 helps, since the curvature vector does not depend on β2 (lecture 4, §1).
+    K_q, K_r = np.array([0.0, 1.0]), np.array([0.0, 2.0])
+    assert not np.allclose(K_q, K_r)
+    return "b"
+
+
 def _implied_point_c1():
     A, B = np.array([0.2, 0.4]), np.array([0.6, 0.4])
     M = (A + B) / 2  # q'(1) = 2 (M - A), r'(0) = 2 (B - M): equal vectors, C1 with β1 = 1
@@ -73,16 +91,18 @@ def _implied_point_c1():
 
 
 ANSWERS = {  # qid: (option letters, right answer)
-    "lecture01.q1": ("abcd", lambda: "b, d"),  # unit tangent and curvature are intrinsic
-    "lecture01.q2": ("abc", lambda: "b"),  # Example 1: G1 but not C1
-    "lecture02.q1": ("abcd", lambda: "b"),  # three shape parameters, only β1 > 0
-    "lecture02.q2": ("abcd", _g2_not_c1),
-    "lecture03.q1": ("abcd", lambda: "c"),  # κ = 0: radius 1/|κ| = ∞, a straight line
-    "lecture04.q1": ("abcd", _knot_ratio),
-    "lecture05.q1": ("abcd", _w1_for_beta1_3),
-    "lecture07.q1": ("abcd", _quartic_c1_not_c2),
-    "lecture09.q1": ("abcd", _implied_point_c1),
-    "lecture09.q3": ("abcd", lambda: "b"),  # all joints G2; the outline moved (nb09, §4)
+    "lecture01.q1": ("abcd", _corner_pair),
+    "lecture02.q1": ("abcd", lambda: "b, d"),  # unit tangent and curvature are intrinsic
+    "lecture02.q2": ("abc", lambda: "b"),  # Example 1: G1 but not C1
+    "lecture03.q1": ("abcd", lambda: "b"),  # three shape parameters, only β1 > 0
+    "lecture03.q2": ("abcd", _g2_not_c1),
+    "lecture04.q1": ("abcd", _same_tangent_other_curvature),
+    "lecture05.q1": ("abcd", lambda: "c"),  # κ = 0: radius 1/|κ| = ∞, a straight line
+    "lecture06.q1": ("abcd", _knot_ratio),
+    "lecture07.q1": ("abcd", _w1_for_beta1_3),
+    "lecture09.q1": ("abcd", _quartic_c1_not_c2),
+    "lecture11.q1": ("abcd", _implied_point_c1),
+    "lecture11.q3": ("abcd", lambda: "b"),  # all joints G2; the outline moved (nb11, §4)
 }
 
 
@@ -165,7 +185,7 @@ def _third_derivative_by_composition():
 def _curvature_jump_by_hand():
     P0, A, B, P2 = (np.array(p) for p in ([0.0, 0.0], [0.2, 0.4], [0.6, 0.4], [0.7, 0.1]))
     M = (A + B) / 2
-    v = B - A  # both velocities at M (lecture 9, §2)
+    v = B - A  # both velocities at M (lecture 11, §2)
     qpp, rpp = 2 * (P0 - 2 * A + M), 2 * (M - 2 * B + P2)  # second derivatives of quadratics
     cross = lambda a, b: a[0] * b[1] - a[1] * b[0]  # noqa: E731
     kq, kr = cross(v, qpp) / 0.4**3, cross(v, rpp) / 0.4**3  # |v| = 0.4: -5 and -3.75
@@ -202,39 +222,59 @@ def _corners_of_ampersand_by_tangent_angles():
     return corners
 
 
+def _b_by_beta_constraints():
+    # r' = (3, 0) = β1 q'(1) with q'(1) = (2, 0): β1 = 3/2; the second constraint
+    # r'' = β1² q''(1) + β2 q'(1) = (9/4)(1, 3) + β2 (2, 0) = (0, b): β2 = -9/8, b = 27/4
+    beta1 = 3.0 / 2.0
+    beta2 = -(beta1**2) * 1.0 / 2.0
+    b = beta1**2 * 3.0 + beta2 * 0.0
+    assert np.isclose(beta1**2 * 1.0 + beta2 * 2.0, 0.0) and b == 6.75
+    return b
+
+
 NUMBERS = {  # qid: (right answer, typical wrong answers)
-    "lecture01.q3": (np.hypot(4, 2), [np.hypot(2, 1)]),  # q~'(v) = 2 q'(2v) = (4, 2)
-    "lecture02.q3": (3.0, [0.0, 2.0]),  # (3, 4) = 2² (0, 1) + β2 (1, 0)
-    "lecture03.q2": (0.5, [2.0, -0.5]),  # 1 / radius, counterclockwise: left turn
+    # q'' = (0, 2) at u = 1, r'' = (0, 2a) at t = 0 (the velocities (1, 2) agree): a = 1;
+    # wrong: a = 2 (r'' set to q''s 2 without the 2 from t²), 0
+    "lecture01.q2": (1.0, [2.0, 0.0]),
+    "lecture02.q3": (np.hypot(4, 2), [np.hypot(2, 1)]),  # q~'(v) = 2 q'(2v) = (4, 2)
+    "lecture03.q3": (3.0, [0.0, 2.0]),  # (3, 4) = 2² (0, 1) + β2 (1, 0)
+    # wrong: q''s 3 without β1², with β1 instead of β1², the curvature 3/4 itself
+    "lecture04.q3": (_b_by_beta_constraints, [3.0, 4.5, 0.75]),
+    "lecture05.q2": (0.5, [2.0, -0.5]),  # 1 / radius, counterclockwise: left turn
     # (x' y'' - y' x'') / (x'² + y'²)^(3/2) = (1 · 2 - 0) / 1; wrong: the radius, the sign
-    "lecture03.q3": (2.0, [0.5, -2.0]),
-    "lecture04.q2": (2.0, [0.5]),  # knot intervals 1 and 2: β1 = 2 / 1
+    "lecture05.q3": (2.0, [0.5, -2.0]),
+    "lecture06.q2": (2.0, [0.5]),  # knot intervals 1 and 2: β1 = 2 / 1
     # p3 = (h2 p2 + h1 p4) / (h1 + h2) with h1 = 2, h2 = 1: (1 · 0 + 2 · 3) / 3; wrong: the
     # weights swapped, the midpoint
-    "lecture04.q3": (2.0, [1.0, 1.5]),
-    "lecture05.q2": (1.0, [0.5]),
-    "lecture05.q3": (4.0, [5.0]),  # W1 = V3 + 0.5 (V3 - V2) = (3, 2) + 0.5 (2, 0)
+    "lecture06.q3": (2.0, [1.0, 1.5]),
+    "lecture07.q2": (1.0, [0.5]),
+    "lecture07.q3": (4.0, [5.0]),  # W1 = V3 + 0.5 (V3 - V2) = (3, 2) + 0.5 (2, 0)
     # W = (β V0 + V1) / (1 + β) = (3 (0, 0) + (4, 0)) / 4; wrong: the ratio swapped, the midpoint
-    "lecture06.q1": (1.0, [3.0, 2.0]),
+    "lecture08.q1": (1.0, [3.0, 2.0]),
     # γ's denominator β2 + β1 (d - 1)(1 + β1) = β2 + 4 for d = 3, β1 = 1; wrong: the sign, and
     # the true pole of the spline (Barsky's δ = 0 at β2 = -12)
-    "lecture06.q2": (-4.0, [4.0, -12.0]),
-    "lecture07.q2": (-0.125, [0.125, -0.5]),  # -β2 / β1³ = -1 / 8
+    "lecture08.q2": (-4.0, [4.0, -12.0]),
+    "lecture09.q2": (-0.125, [0.125, -0.5]),  # -β2 / β1³ = -1 / 8
     # (n + 2) weights of degree n + 1 for n = 4; wrong: n = 3's 25, the 35 equations without
     # the normalization
-    "lecture07.q3": (36, [25, 35]),
-    "lecture08.q1": (10, [4, 6]),  # n (n + 3) for n = 2
+    "lecture09.q3": (36, [25, 35]),
+    "lecture10.q1": (10, [4, 6]),  # n (n + 3) for n = 2
     # u^(h,l), v^(h,l) with l >= 1: 2k of order k, sum over k = 1..3; wrong: all 18, order 3's 6
-    "lecture08.q2": (12, [18, 6]),
-    "lecture09.q2": (_corners_of_ampersand_by_tangent_angles, [0, 11, 13, 6]),
-    "lecture09.q4": (_curvature_jump_by_hand, [0.625, 0.08, -1.25]),  # no 2, numerator, sign
-    "lecture09.q5": (_g2_joints_of_eight_by_continuity_report, [30, 26, 3]),
+    "lecture10.q2": (12, [18, 6]),
+    "lecture11.q2": (_corners_of_ampersand_by_tangent_angles, [0, 11, 13, 6]),
+    "lecture11.q4": (_curvature_jump_by_hand, [0.625, 0.08, -1.25]),  # no 2, numerator, sign
+    "lecture11.q5": (_g2_joints_of_eight_by_continuity_report, [30, 26, 3]),
 }
 VECTORS = {
+    # q(u) = (u, u²): q'(1) = (1, 2), |q'(1)| = √5; wrong: not normalized, x and y swapped
+    "lecture01.q3": (np.array([1.0, 2.0]) / np.sqrt(5), [[1, 2], [2 / np.sqrt(5), 1 / np.sqrt(5)]]),
+    # K = (q'' - (q''·T) T) / |q'|² = ((1, 3) - (1, 0)) / 4 = (0, 3/4); wrong: not divided by
+    # |q'|², the tangential part of q'' kept
+    "lecture04.q2": (np.array([0.0, 0.75]), [[0, 3], [0.25, 0.75]]),
     # wrong: the velocity of Q∘f (not normalized); T of Q at u = v instead of u = f(v)
-    "lecture01.q4": (_unit_tangent_of_q_after_f, [[3, 3], [0.6, 0.8]]),
+    "lecture02.q4": (_unit_tangent_of_q_after_f, [[3, 3], [0.6, 0.8]]),
     # wrong: without the 3 of 3 β1 β2 q''; with DeRose & Barsky's misprint β2 q' for β3 q'
-    "lecture02.q4": (_third_derivative_by_composition, [[11, 10], [9, 14]]),
+    "lecture03.q4": (_third_derivative_by_composition, [[11, 10], [9, 14]]),
 }
 
 
@@ -281,7 +321,7 @@ def test_every_code_exercise_of_the_lectures_is_covered():
     per_lecture = {}
     for qid in found:
         per_lecture[qid[7:9]] = per_lecture.get(qid[7:9], 0) + 1
-    assert all(per_lecture.get(f"{n:02d}", 0) >= 2 for n in range(1, 10)), per_lecture
+    assert all(per_lecture.get(f"{n:02d}", 0) >= 2 for n in range(1, 12)), per_lecture
 
 
 _ANY_ANSWER = st.one_of(

@@ -20,7 +20,6 @@ import urllib.request
 from pathlib import Path
 
 import pytest
-from _homework_support import load
 
 ROOT = Path(__file__).resolve().parents[1]
 NOTEBOOK = ROOT / "tests" / "fixtures" / "lecture_demo.ipynb"
@@ -136,7 +135,9 @@ def log_text(f) -> str:
 # ----------------------------------------------- make present: the deck of a lecture
 def _present():
 
-    return load("present", ROOT / "tools" / "present.py")
+    from tools import present
+
+    return present
 
 
 def test_deck_is_the_lecture_without_answer_cells(tmp_path):
@@ -169,7 +170,7 @@ def test_find_lecture_names_the_lectures_on_a_bad_choice():
 
 def test_voila_runs_the_deck_template_preheated_and_offline():
     present = _present()
-    cmd = " ".join(present.voila_command(Path("/x/05_stitching_bezier_curves.ipynb"), 8866))
+    cmd = " ".join(present.voila_command(Path("/x/07_stitching_bezier_curves.ipynb"), 8866))
     assert "--template=course-deck" in cmd and "--preheat_kernel=True" in cmd
     assert "--Voila.ip=127.0.0.1" in cmd
     env = present.voila_env({})

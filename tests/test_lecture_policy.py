@@ -343,3 +343,11 @@ def test_one_notation_and_static_figures(path):
         and re.search(r"beta[2-9]|β[2-9]", str(getattr(n.args[0], "value", "")))
     ]
     assert not positive, f"{path.name}: only β1 is positive; β2, β3, ... are real ({positive})"
+
+
+def test_every_lecture_is_measured_and_numbered_without_gaps():
+    """The rules above run on every lecture, and the previous/next link check has a neighbour
+    to look for: lectures are numbered 01, 02, ... without a gap (a split renumbers them)."""
+    numbers = [_lecture_number(p) for p in NOTEBOOKS]
+    assert numbers == list(range(1, len(numbers) + 1)), numbers
+    assert len(IDS) == len(set(p.name[:2] for p in NOTEBOOKS))

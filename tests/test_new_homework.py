@@ -27,7 +27,6 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
-from _homework_support import load
 
 ROOT = Path(__file__).resolve().parents[1]
 TITLE = "Are letters smooth?"
@@ -46,9 +45,8 @@ import nbformat
 from nbclient import NotebookClient
 
 root, hw = Path.cwd(), sys.argv[1]
-sys.path.insert(0, str(root / "tools"))
-import build_homework as build
-from grading.protocol import LocalStudent, run_question
+from tools import build_homework as build
+from tools.grading.protocol import LocalStudent, run_question
 import course_lib.checks
 
 out = {"course_lib": course_lib.checks.__file__, "homeworks": list(course_lib.checks.HOMEWORKS),
@@ -275,6 +273,7 @@ def test_it_never_overwrites_and_refuses_bad_arguments(scaffolded):
      ("G2 & C2: Beta-splines", "g2_c2_beta_splines")],
 )  # fmt: skip
 def test_file_names_come_from_the_title(title, expected):
-    module = load("new_homework", ROOT / "tools" / "new_homework.py")
+    from tools import new_homework as module
+
     assert module.slug(title) == expected
     assert re.fullmatch(r"[a-z0-9_]{1,40}", module.slug("word " * 30))

@@ -8,14 +8,13 @@ prose makes are `assert` cells, so executing a notebook checks it.
 from __future__ import annotations
 
 import json
-import sys
 from pathlib import Path
 
 import pytest
 
+from tools.strip_notebooks import course_notebooks, is_stripped
+
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "tools"))
-from strip_notebooks import course_notebooks, is_stripped  # noqa: E402
 
 NOTEBOOKS = course_notebooks()
 IDS = [str(p.relative_to(ROOT)) for p in NOTEBOOKS]
@@ -52,14 +51,16 @@ def test_lecture_notebooks_exist_in_course_order():
     names = sorted(p.name for p in (ROOT / "notebooks").glob("*.ipynb"))
     expected = [
         "00_welcome.ipynb",
-        "01_reparametrization.ipynb",
-        "02_beta_constraints.ipynb",
-        "03_curvature_of_plane_curves.ipynb",
-        "04_g1_knot_bezier_splines.ipynb",
-        "05_stitching_bezier_curves.ipynb",
-        "06_beta_splines.ipynb",
-        "07_higher_order.ipynb",
-        "08_surfaces.ipynb",
-        "09_are_letters_smooth.ipynb",
+        "01_parametric_continuity.ipynb",
+        "02_reparametrization.ipynb",
+        "03_beta_constraints.ipynb",
+        "04_arc_length_and_theorem_1.ipynb",
+        "05_curvature_of_plane_curves.ipynb",
+        "06_g1_knot_bezier_splines.ipynb",
+        "07_stitching_bezier_curves.ipynb",
+        "08_beta_splines.ipynb",
+        "09_higher_order.ipynb",
+        "10_surfaces.ipynb",
+        "11_are_letters_smooth.ipynb",
     ]
     assert [n for n in names if n in expected] == expected

@@ -25,6 +25,7 @@ from _homework_support import VariantHomework, load
 
 from course_lib import own_work, variants
 from course_lib.checks import HOMEWORKS, check, questions, registry
+from tools.grading.protocol import LocalStudent, run_question
 
 ROOT = Path(__file__).resolve().parents[1]
 HIDDEN = {
@@ -32,7 +33,6 @@ HIDDEN = {
     for hw in HOMEWORKS
 }
 
-from grading.protocol import LocalStudent, run_question  # noqa: E402  (path set by _homework_support)
 
 
 def _outline_of(P0, A, B, P2):
@@ -293,7 +293,7 @@ LAZY_CELLS = {
 def test_a_lazy_notebook_graded_in_the_sandbox(tmp_path):
     import nbformat
 
-    grade = load("grade_own_work", ROOT / "tools" / "grade.py")
+    from tools import grade
     (solution,) = sorted((ROOT / "solutions").glob("hw03_*.ipynb"))
     nb = nbformat.read(solution, as_version=4)
     for cell in nb.cells:
@@ -764,3 +764,153 @@ def test_a_guard_switched_off_by_rebinding_costs_the_question(how, monkeypatch):
     assert not verdict.passed and "guard of hw03.q7 was switched off" in verdict.message
     fraction, note = _grade("hw03.q7", {"knot_ratio_beta1": answer})
     assert fraction == 0 and "guard of hw03.q7 was switched off" in note
+
+
+# ------------------------------------------------------------ one marker: ExerciseError's type
+
+
+def test_the_exercise_travels_as_a_flag_not_as_a_sentence():
+    """The check, the probe and the grader recognise ExerciseError by its type and fields: a
+    student's exception that copies the sentence is an exception like any other."""
+    from course_lib import _probe
+    from course_lib.checks._core import AnswerProblem, call_answer
+    from course_lib.knot_splines import knot_ratio_beta1
+
+    sentence = own_work.exercise_message("course_lib.knot_splines.knot_ratio_beta1", "hw03.q7")
+
+    def mimic(knots):
+        raise RuntimeError(sentence)
+
+    # the probe: kind "exercise" with the fields, for the library's guard only
+    response = _probe.handle({"op": "call", "name": "knot_ratio_beta1", "args": [[0, 1, 3]]},
+                             {"knot_ratio_beta1": knot_ratio_beta1})  # fmt: skip
+    assert response["error"] == "exercise" and response["question"] == "hw03.q7"
+    assert response["implementation"] == "course_lib.knot_splines.knot_ratio_beta1"
+    response = _probe.handle({"op": "call", "name": "knot_ratio_beta1", "args": [[0, 1, 3]]},
+                             {"knot_ratio_beta1": mimic})  # fmt: skip
+    assert response["error"] == "raised"
+    # the grader: the sentence for the library, the type only for the mimic
+    assert sentence in _grade("hw03.q7", {"knot_ratio_beta1": knot_ratio_beta1})[1]
+    fraction, note = _grade("hw03.q7", {"knot_ratio_beta1": mimic})
+    assert fraction == 0 and sentence not in note and "RuntimeError" in note
+    # the check: AnswerProblem.exercise
+    with pytest.raises(AnswerProblem) as info:
+        call_answer(knot_ratio_beta1, np.array([0.0, 1.0, 3.0]), name="knot_ratio_beta1")
+    assert info.value.exercise and info.value.message == sentence + "."
+    with pytest.raises(AnswerProblem) as info:
+        call_answer(mimic, np.array([0.0, 1.0, 3.0]), name="knot_ratio_beta1")
+    assert not info.value.exercise
+
+
+def test_hw03_q2_passes_the_exercise_on_by_its_flag():
+    """hw03.q2's check prefixes a failing case's knots -- but not to the own-work sentence."""
+    from course_lib.knot_splines import bezier_points_from_g1
+
+    sentence = own_work.exercise_message("course_lib.knot_splines.bezier_points_from_g1", "hw03.q2")
+    assert check("hw03.q2", bezier_points_from_g1).message == sentence + "."
+
+    def mimic(d, knots):
+        raise RuntimeError(sentence)
+
+    message = check("hw03.q2", mimic).message
+    assert message.startswith("with knots") and "RuntimeError" in message
+
+
+def test_a_forged_exercise_response_gets_no_sentence():
+    """The sentence is written by the grader from registered fields, never from the response."""
+    from tools.grading.protocol import StudentRaised, parse_response
+
+    def forged(**fields):
+        return json.dumps({"ok": False, "error": "exercise", "message": "anything", **fields})
+
+    with pytest.raises(StudentRaised) as info:
+        parse_response(forged(question="hw03.q7", implementation="course_lib.knot_splines.knot_ratio_beta1"))
+    assert info.value.exercise and "is the exercise of hw03.q7" in str(info.value)
+    value = "course_lib.knot_splines.bezier_points_from_g1 is the exercise of hw03.q1, hw03.q3"
+    with pytest.raises(StudentRaised) as info:
+        parse_response(forged(question="hw03.q1, hw03.q3 and hw03.q5",
+                              implementation="course_lib.knot_splines.bezier_points_from_g1"))
+    assert value in str(info.value)
+    for fields in ({"question": "hw03.q7", "implementation": "course_lib.bezier.anything"},
+                   {"question": "hw03.q1 and hw01.q1",
+                    "implementation": "course_lib.knot_splines.bezier_points_from_g1"},
+                   {"question": "hw99.q1", "implementation": "x"}, {}):  # fmt: skip
+        with pytest.raises(StudentRaised) as info:
+            parse_response(forged(**fields))
+        assert "exercise of" not in str(info.value) and "anything" not in str(info.value)
+
+
+def test_an_exercise_error_crosses_processes_with_its_fields():
+    import pickle
+
+    err = own_work.ExerciseError("course_lib.knot_splines.knot_ratio_beta1", "hw03.q7", True)
+    back = pickle.loads(pickle.dumps(err))
+    assert (back.implementation, back.question, back.switched_off) == (
+        err.implementation, err.question, True)  # fmt: skip
+    assert str(back) == str(err) and "switched off" in str(back)
+
+
+# ------------------------------------------------------------ the grader's state file
+
+
+@pytest.fixture
+def graded_state(tmp_path, monkeypatch):
+    """This process as if in the grader's sandbox: the state file (normally bind-mounted
+    read-only at own_work.GRADER_STATE_FILE) at a path of the test's own."""
+    state = tmp_path / "grading"
+    state.write_text(own_work.grader_state_text("hw03"))
+    monkeypatch.setattr(own_work, "GRADER_STATE_FILE", str(state))
+    monkeypatch.setattr(own_work, "_GRADED", True)
+    monkeypatch.setenv(own_work.ENV_VAR, "")
+    return state
+
+
+def test_the_grader_s_state_guards_whatever_the_kernel_cleared(graded_state):
+    """No frame of the probe, no list, no environment, no HOMEWORK: the file decides."""
+    from course_lib.knot_splines import bezier_points_from_g1, knot_ratio_beta1
+
+    D = np.array([[0, 0], [1, 2], [2, 3], [4, 3], [5, 1], [6, 0]], dtype=float)
+    assert knot_ratio_beta1(np.array([0.0, 1.0, 3.0])) is not None  # between requests: free
+    with pytest.raises(own_work.ExerciseError) as info:  # hw03.q1's value, HOMEWORK or not
+        bezier_points_from_g1(D, [0.0, 1.0, 3.0])
+    assert info.value.question.startswith("hw03.q1")  # hw03.q1, hw03.q3 and hw03.q5
+    graded_state.write_text(own_work.grader_state_text("hw03", ("hw03.q7",)))  # a request
+    own_work._ACTIVE.clear()
+    with pytest.raises(own_work.ExerciseError) as info:
+        knot_ratio_beta1(np.array([0.0, 1.0, 3.0]))
+    assert (info.value.question, info.value.implementation) == (
+        "hw03.q7", "course_lib.knot_splines.knot_ratio_beta1")  # fmt: skip
+    graded_state.write_text(own_work.grader_state_text("hw04"))  # another homework: free
+    assert bezier_points_from_g1(D, [0.0, 1.0, 3.0]) is not None
+    graded_state.unlink()  # unreadable: every guarded implementation refuses
+    with pytest.raises(own_work.ExerciseError):
+        knot_ratio_beta1(np.array([0.0, 1.0, 3.0]))
+
+
+def test_switching_the_state_file_off_in_the_kernel_costs_the_question(graded_state, monkeypatch):
+    from course_lib.knot_splines import knot_ratio_beta1
+
+    monkeypatch.setattr(own_work, "_GRADED", False)
+    fraction, note = _grade("hw03.q7", {"knot_ratio_beta1": knot_ratio_beta1})
+    assert fraction == 0 and "guard of hw03.q7 was switched off" in note
+
+
+def test_the_state_text_is_one_line_per_name():
+    assert own_work.grader_state_text("hw03", ("hw03.q7",)) == "hw03\nhw03.q7\n"
+    with pytest.raises(ValueError, match="questions"):
+        own_work.grader_state_text("hw03", ("hw03.q7\nhw03.q2",))
+
+
+def test_the_sandbox_shows_the_state_file_read_only(tmp_path):
+    from tools.grading import sandbox
+
+    if sandbox.bwrap_path() is None:
+        pytest.skip("bubblewrap is not installed")
+    job = tmp_path / "job-x"
+    job.mkdir()
+    assert own_work.GRADER_STATE_FILE not in sandbox.bwrap_argv(job)
+    sandbox.grader_state_path(job).write_text(own_work.grader_state_text("hw03"))
+    argv = sandbox.bwrap_argv(job)
+    i = argv.index(own_work.GRADER_STATE_FILE)
+    assert argv[i - 2 : i] == ["--ro-bind", str(sandbox.grader_state_path(job))]
+    assert job not in sandbox.grader_state_path(job).parents  # not in the writable job folder

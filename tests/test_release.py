@@ -20,10 +20,10 @@ import zipfile
 from pathlib import Path
 
 import pytest
-from _homework_support import load
+
+from tools import release
 
 ROOT = Path(__file__).resolve().parents[1]
-release = load("release", ROOT / "tools" / "release.py")
 
 
 @pytest.fixture(scope="module")
@@ -94,6 +94,9 @@ def test_edition_holds_what_a_student_needs(edition):
             ".jupyter-course/lab/user-settings-defaults/@jupyterlab/apputils-extension/"
             "notification.jupyterlab-settings"} <= names
     assert "--config=.jupyter-course/jupyter_server_config.py" in (edition / "Makefile").read_text()
+    # the edition installs course_lib alone (tools/ stays with the instructors)
+    pyproject = (edition / "pyproject.toml").read_text(encoding="utf-8")
+    assert 'include = ["course_lib*"]' in pyproject and '"tools*"' not in pyproject
     # its welcome page names only the edition's commands and links nothing it does not hold
     welcome = (edition / "notebooks" / "00_welcome.ipynb").read_text(encoding="utf-8")
     assert "make submit HW=hw01" in welcome and "make lab" in welcome

@@ -11,12 +11,11 @@ import subprocess
 from pathlib import Path
 
 import pytest
-from _homework_support import load
 
 from course_lib.submit import find_homework
+from tools import release
 
 ROOT = Path(__file__).resolve().parents[1]
-release = load("release_semester", ROOT / "tools" / "release.py")
 
 needs_make = pytest.mark.skipif(shutil.which("make") is None, reason="needs make")
 

@@ -39,21 +39,17 @@ from urllib.parse import unquote, urlsplit
 import pytest
 from _homework_support import load
 
+from tools import build_handouts, build_site
+
 ROOT = Path(__file__).resolve().parents[1]
 ARTIFACTS = ROOT / "test-artifacts" / "site"
-LECTURE = "01_reparametrization"  # the lecture page screenshot in the browser
+LECTURE = "01_parametric_continuity"  # the lecture page screenshot in the browser
 # the pages opened in the browser (3 s each): name -> path in the site.  Every page is
 # checked for raw TeX without a browser (test_no_raw_tex_on_any_page).
 PAGES = {"index": "index.html", "course": "course.html", LECTURE: f"lectures/{LECTURE}.html"}
 PAGES |= {p.stem: f"homework/{p.stem}.html" for p in sorted((ROOT / "exercises").glob("hw*.ipynb"))[:1]}
 
 
-def _load(name: str):
-    return load(name, ROOT / "tools" / f"{name}.py")
-
-
-build_site = _load("build_site")
-build_handouts = _load("build_handouts")
 
 
 # ----------------------------------------------------------------------------- fixtures
@@ -391,10 +387,10 @@ def test_tab_titles_are_plain_text_and_headings_keep_their_math(site):
             if RAW_TEX.search(text) or "\\" in text or "$" in text or "^" in text:
                 bad.append(f"{page.relative_to(site)}: {text!r}")
     assert not bad, "\n".join(bad)
-    lecture5 = next(site.glob("lectures/07_*.html"))
+    lecture9 = next(site.glob("lectures/09_*.html"))
     p = _Title()
-    p.feed(lecture5.read_text(errors="replace"))
-    plain = "7 · Higher order: the quartic G3 Beta-spline and Gⁿ"
+    p.feed(lecture9.read_text(errors="replace"))
+    plain = "9 · Higher order: the quartic G3 Beta-spline and Gⁿ"
     assert p.title.startswith(plain)
     assert p.print_h1.strip() == plain, "the heading of the printed page (handouts)"
     assert "\\(G^n\\)" in p.h1, f"the heading keeps its math: {p.h1!r}"

@@ -10,12 +10,11 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from _homework_support import load
 
 from course_lib import variants
+from tools import variant as tool
 
 ROOT = Path(__file__).resolve().parents[1]
-tool = load("variant_tool", ROOT / "tools" / "variant.py")
 
 
 @pytest.fixture(autouse=True)

@@ -30,10 +30,9 @@ import time
 from pathlib import Path
 from urllib.parse import urlparse
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "tools"))
+from tools.chromium import CHROMIUM_ENV, find_chromium
 
-from chromium import CHROMIUM_ENV, find_chromium  # noqa: E402
+ROOT = Path(__file__).resolve().parents[1]
 
 SITE = ROOT / "build" / "site"
 OUT = ROOT / "build" / "handouts"
@@ -144,8 +143,7 @@ def lecture_pages(site: Path) -> list[Path]:
 def build(site: Path = SITE, out: Path = OUT, only: list[str] | None = None) -> list[Path]:
     t0 = time.perf_counter()
     if not (site / "index.html").exists():
-        sys.path.insert(0, str(ROOT / "tools"))
-        import build_site
+        from tools import build_site
 
         build_site.build(only, site, 2, True)
     pages = [p for p in lecture_pages(site) if not only or p.stem in only]

@@ -24,7 +24,7 @@ the repository; the build works on copies in ``build/site-src/``:
 
 Never read: ``solutions/``, ``tools/homework_src/``, ``solutions/hidden_tests/``.
 
-Options: ``--only 01_reparametrization`` (repeatable; a partial site, for quick checks and
+Options: ``--only 01_parametric_continuity`` (repeatable; a partial site, for quick checks and
 tests), ``--out DIR``, ``--no-cache``, ``--jobs N``.
 """
 

@@ -94,10 +94,9 @@ from concurrent.futures import ThreadPoolExecutor, as_completed
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-
-from grading import identity, intake, jobroot, reports, safe_names, sandbox
-from grading.runner import (
+from course_lib import variants
+from tools.grading import identity, intake, jobroot, reports, safe_names, sandbox
+from tools.grading.runner import (
     DEFAULT_CELL_TIMEOUT,
     DEFAULT_QUESTION_TIMEOUT,
     DEFAULT_TIME_LIMIT,
@@ -110,13 +109,10 @@ from grading.runner import (
     grade_payload,
 )
 
-from course_lib import variants
-
 __all__ = [
     "HiddenTests",
     "Result",
     "discover",
-    "feedback_markdown",
     "feedback_names",
     "grade_notebook",
     "main",
@@ -224,10 +220,6 @@ def discover(folder: Path) -> list[tuple[str, Path, list[Path]]]:
 def feedback_names(students: list[str]) -> dict[str, str]:
     """A distinct, filesystem-safe file stem per student (distinct even case-insensitively)."""
     return safe_names.file_stems(students)
-
-
-def feedback_markdown(r: Result, tests: HiddenTests, late=None) -> str:
-    return reports.feedback_markdown(r, tests, late)
 
 
 class Reports:
@@ -432,7 +424,7 @@ def _not_graded(item: Item, tests: HiddenTests, mode: str) -> Result:
     return r
 
 
-def main(argv: list[str] | None = None) -> int:
+def _parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(description="Grade submitted notebooks against hidden tests.")
     p.add_argument("--tests", required=True, type=Path, help="hidden test file (.py)")
     p.add_argument("--submissions", required=True, type=Path, help="folder of submitted .ipynb")
@@ -498,8 +490,109 @@ def main(argv: list[str] | None = None) -> int:
         help="Dask scheduler address, e.g. tcp://host:8786 "
         "(default with --executor dask: a local cluster)",
     )
-    args = p.parse_args(argv)
+    return p
 
+
+def _only(student: str, found: list[Item], refused: dict) -> tuple[list[Item], dict]:
+    """``--only``: the submissions and refused files of one student (file name or roster id)."""
+    found = [i for i in found if student == i.student
+             or (i.who.entry is not None and student in (i.who.entry.id, *i.who.entry.aliases))]  # fmt: skip
+    return found, {k: v for k, v in refused.items() if k == student}
+
+
+def _kept_rows(out: Path, tests: HiddenTests, found: list[Item]) -> list[Result]:
+    """``--only``: the earlier rows that stay (the regraded submissions replace theirs)."""
+    files = {i.found.rel for i in found} | {o.rel for i in found for o in i.others}
+    students = {i.student for i in found}
+    return [r for r in load_previous(out, tests)
+            if r.student not in students and r.file not in files]  # fmt: skip
+
+
+def _list_refused(out: Reports, refused: dict, found: list[Item], tests: HiddenTests, mode: str):
+    """A row for each student none of whose files was opened (links, FIFOs, ...)."""
+    for student, entries in refused.items():
+        if not any(i.student == student for i in found):  # nothing of theirs was opened
+            r = _refused_result(student, entries, tests, mode)
+            out.lookup(r)
+            out.add(r)
+            print(f"{r.student}: not graded ({r.status})", flush=True)
+
+
+def _run_options(args, mode: str) -> dict:
+    """The runner's options from the command line: time limits, sandbox, resource limits."""
+    limits = sandbox.Limits(
+        memory_bytes=int(args.memory * sandbox.GIB),
+        cpu_seconds=int(args.time_limit) + 30,
+        output_bytes=args.output_limit,
+        disk_bytes=int(args.disk * (1 << 20)),
+        tmp_bytes=int(args.tmp_size * (1 << 20)),
+    )
+    if args.job_root is not None:
+        try:
+            jobroot.check_root(args.job_root)
+        except (ValueError, OSError) as exc:
+            raise SystemExit(f"--job-root: {exc}") from None
+    return {
+        "cell_timeout": args.cell_timeout,
+        "time_limit": args.time_limit,
+        "question_timeout": args.question_timeout,
+        "mode": mode,
+        "limits": limits,
+        "job_root": str(args.job_root) if args.job_root is not None else None,
+    }
+
+
+def _grade_on_dask(args, found: list[Item], payload, done, tests: HiddenTests, mode: str) -> None:
+    """``--executor dask``: one task per submission on ``--scheduler`` (or a local cluster)."""
+    from distributed import Client, LocalCluster
+    from distributed import as_completed as dask_completed
+
+    cluster = None
+    if args.scheduler:
+        client = Client(args.scheduler)
+    else:
+        cluster = LocalCluster(
+            n_workers=max(1, args.jobs),
+            threads_per_worker=1,
+            processes=True,
+            dashboard_address=None,
+        )
+        client = Client(cluster)
+    try:
+        futures = {client.submit(grade_payload, payload(item), pure=False): item for item in found}
+        # a generous bound, so that a cluster that cannot run the task never hangs the batch
+        bound = (args.time_limit + 120) * (1 + len(found) // max(1, args.jobs))
+        for future in dask_completed(futures, timeout=bound):
+            item = futures[future]
+            try:
+                data = future.result()
+            except Exception as exc:  # a lost worker: the row says so, the batch goes on
+                data = asdict(
+                    Result(
+                        item.student,
+                        dict.fromkeys(tests.points, 0.0),
+                        dict.fromkeys(tests.points, "not graded"),
+                        [f"the Dask worker failed ({type(exc).__name__})"],
+                        status="grader error",
+                        sandbox=mode,
+                    )
+                )
+            done(item, data)
+    finally:
+        client.close()
+        if cluster is not None:
+            cluster.close()
+
+
+def _grade_locally(args, found: list[Item], payload, done) -> None:
+    with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+        futures = {pool.submit(grade_payload, payload(item)): item for item in found}
+        for future in as_completed(futures):  # each row is written as soon as it is graded
+            done(futures[future], future.result())
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = _parser().parse_args(argv)
     tests = HiddenTests.load(args.tests)
     if not args.submissions.is_dir():
         print(f"--submissions {args.submissions} is not a folder", file=sys.stderr)
@@ -517,9 +610,7 @@ def main(argv: list[str] | None = None) -> int:
     found = plan(args.submissions, roster, homework=tests.homework, secret=secret,
                  variants_on=tests.variants, refused=refused)  # fmt: skip
     if args.only is not None:
-        found = [i for i in found if args.only == i.student
-                 or (i.who.entry is not None and args.only in (i.who.entry.id, *i.who.entry.aliases))]  # fmt: skip
-        refused = {k: v for k, v in refused.items() if k == args.only}
+        found, refused = _only(args.only, found, refused)
         if not found and not refused:
             print(f"--only {args.only}: no submission of that student", file=sys.stderr)
             return 2
@@ -532,26 +623,7 @@ def main(argv: list[str] | None = None) -> int:
     mode, message = resolve_sandbox(args.sandbox)
     if message:
         print(message, file=sys.stderr, flush=True)
-    limits = sandbox.Limits(
-        memory_bytes=int(args.memory * sandbox.GIB),
-        cpu_seconds=int(args.time_limit) + 30,
-        output_bytes=args.output_limit,
-        disk_bytes=int(args.disk * (1 << 20)),
-        tmp_bytes=int(args.tmp_size * (1 << 20)),
-    )
-    if args.job_root is not None:
-        try:
-            jobroot.check_root(args.job_root)
-        except (ValueError, OSError) as exc:
-            raise SystemExit(f"--job-root: {exc}") from None
-    options = {
-        "cell_timeout": args.cell_timeout,
-        "time_limit": args.time_limit,
-        "question_timeout": args.question_timeout,
-        "mode": mode,
-        "limits": limits,
-        "job_root": str(args.job_root) if args.job_root is not None else None,
-    }
+    options = _run_options(args, mode)
     if mode == "bwrap":  # prove it once, before anyone is graded
         problem = check_sandbox(Options(**options))
         if problem:
@@ -563,21 +635,11 @@ def main(argv: list[str] | None = None) -> int:
             )
             return 2
     args.out.mkdir(parents=True, exist_ok=True)
-    keep = None
-    if args.only is not None:  # the regraded submissions replace their earlier rows
-        files = {i.found.rel for i in found} | {o.rel for i in found for o in i.others}
-        students = {i.student for i in found}
-        keep = [r for r in load_previous(args.out, tests)
-                if r.student not in students and r.file not in files]  # fmt: skip
+    keep = None if args.only is None else _kept_rows(args.out, tests, found)
     out = Reports(tests, args.out, fmt=args.format, roster=roster, late=late, keep=keep,
                   assignment=assignment)  # fmt: skip
     out.reserve([i.student for i in found] + list(refused))
-    for student, entries in refused.items():
-        if not any(i.student == student for i in found):  # nothing of theirs was opened
-            r = _refused_result(student, entries, tests, mode)
-            out.lookup(r)
-            out.add(r)
-            print(f"{r.student}: not graded ({r.status})", flush=True)
+    _list_refused(out, refused, found, tests, mode)
 
     def payload(item: Item) -> dict:
         opts = dict(options)
@@ -611,51 +673,9 @@ def main(argv: list[str] | None = None) -> int:
     found = [i for i in found if i.graded]
 
     if args.executor == "dask":
-        from distributed import Client, LocalCluster
-        from distributed import as_completed as dask_completed
-
-        cluster = None
-        if args.scheduler:
-            client = Client(args.scheduler)
-        else:
-            cluster = LocalCluster(
-                n_workers=max(1, args.jobs),
-                threads_per_worker=1,
-                processes=True,
-                dashboard_address=None,
-            )
-            client = Client(cluster)
-        try:
-            futures = {
-                client.submit(grade_payload, payload(item), pure=False): item for item in found
-            }
-            # a generous bound, so that a cluster that cannot run the task never hangs the batch
-            bound = (args.time_limit + 120) * (1 + len(found) // max(1, args.jobs))
-            for future in dask_completed(futures, timeout=bound):
-                item = futures[future]
-                try:
-                    data = future.result()
-                except Exception as exc:  # a lost worker: the row says so, the batch goes on
-                    data = asdict(
-                        Result(
-                            item.student,
-                            dict.fromkeys(tests.points, 0.0),
-                            dict.fromkeys(tests.points, "not graded"),
-                            [f"the Dask worker failed ({type(exc).__name__})"],
-                            status="grader error",
-                            sandbox=mode,
-                        )
-                    )
-                done(item, data)
-        finally:
-            client.close()
-            if cluster is not None:
-                cluster.close()
+        _grade_on_dask(args, found, payload, done, tests, mode)
     else:
-        with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
-            futures = {pool.submit(grade_payload, payload(item)): item for item in found}
-            for future in as_completed(futures):  # each row is written as soon as it is graded
-                done(futures[future], future.result())
+        _grade_locally(args, found, payload, done)
     out.finish()
     print(
         f"wrote {args.out / 'scores.csv'}, {args.out / 'summary.md'} and "

@@ -29,7 +29,6 @@ written in CONTRIBUTING.md ("Homework: the rules the tests enforce").
 from __future__ import annotations
 
 import argparse
-import importlib.util
 import re
 import sys
 import unicodedata
@@ -372,13 +371,10 @@ def _fill(template: str, homework: str, number: int, title: str, stem: str) -> s
     return template
 
 
-def _build_notebooks(root: Path) -> int:
-    spec = importlib.util.spec_from_file_location(
-        "_build_homework_for_new", root / "tools" / "build_homework.py"
-    )
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module.main([])
+def _build_notebooks() -> int:
+    from tools import build_homework
+
+    return build_homework.main([])
 
 
 NEXT_STEPS = """
@@ -421,7 +417,7 @@ def main(argv: list[str] | None = None) -> int:
         with open(path, "x", encoding="utf-8") as fh:  # "x": never overwrite
             fh.write(_fill(template, homework, number, title, stem))
         print(f"wrote {path.relative_to(ROOT)}")
-    code = _build_notebooks(ROOT)
+    code = _build_notebooks()
     if code:
         print("error: tools/build_homework.py failed", file=sys.stderr)
         return code

@@ -15,7 +15,7 @@
 
 Usage::
 
-    python tools/present.py 05                 # or a path: notebooks/05_stitching_bezier_curves.ipynb
+    python tools/present.py 07                 # or a path: notebooks/07_stitching_bezier_curves.ipynb
     python tools/present.py 04 --port 8866 --no-wait --build-only
 
 Why Voilà and not RISE: jupyterlab-rise 0.43.1 (the newest release, checked with
@@ -51,7 +51,7 @@ ANSWER_CELL = re.compile(
 
 
 def find_lecture(which: str) -> Path:
-    """``"05"``, ``"5"``, ``"05_stitching_bezier_curves"`` or a path -> the lecture notebook.
+    """``"07"``, ``"7"``, ``"07_stitching_bezier_curves"`` or a path -> the lecture notebook.
 
     Raises
     ------

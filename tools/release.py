@@ -138,7 +138,9 @@ def _student_pyproject(text: str) -> str:
             continue
         if line.startswith("[tool.pytest") or line.startswith("[tool.ruff"):
             break  # instructors' tool settings
-        lines.append(line)
+        if line.startswith("# tools/") or line.startswith("# in the course's environment"):
+            continue  # the edition has no tools/: its package is course_lib alone
+        lines.append(line.replace('include = ["course_lib*", "tools*"]', 'include = ["course_lib*"]'))
     return "\n".join(lines).rstrip() + "\n"
 
 
@@ -146,7 +148,7 @@ def _student_pyproject(text: str) -> str:
 WELCOME = "notebooks/00_welcome.ipynb"
 WELCOME_EDITS = [
     (
-        "| `make present L=04` | shows lecture 04 as slides for a projector: large text, live demos, "
+        "| `make present L=06` | shows lecture 6 as slides for a projector: large text, live demos, "
         "no code (any lecture number works) |\n",
         "",
     ),

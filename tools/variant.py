@@ -42,14 +42,11 @@ import secrets
 import sys
 from pathlib import Path
 
+from course_lib import variants
+from tools.grading import reports
+from tools.grading.safe_names import safe_csv_writer
+
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-sys.path.insert(0, str(ROOT))
-
-from grading import reports  # noqa: E402
-from grading.safe_names import safe_csv_writer  # noqa: E402
-
-from course_lib import variants  # noqa: E402
 
 DEFAULT_SECRET = Path("course_secret.txt")
 

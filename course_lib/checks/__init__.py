@@ -35,8 +35,8 @@ computed at check time in :mod:`course_lib.checks.lectures` (a lecture must not 
 answers, not even as an expression)::
 
     from course_lib.checks.lectures import check_number, check_vector
-    check_number("lecture04.q2", my_beta1)
-    check_vector("lecture01.q4", my_tangent)
+    check_number("lecture06.q2", my_beta1)
+    check_vector("lecture02.q4", my_tangent)
 
 :func:`check_value` compares against a value passed in by the caller and never prints it
 (for solution notebooks and tests)::

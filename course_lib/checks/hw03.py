@@ -119,7 +119,7 @@ def _q2(func):
         try:
             res = call_answer(func, d.copy(), np.array(knots), name="g1_bezier_control_points")
         except AnswerProblem as exc:
-            if exc.unanswered or "write it yourself" in exc.message:  # the own-work sentence
+            if exc.unanswered or exc.exercise:  # a stub, or the library's own-work guard
                 raise
             case = f"with knots {knots} ({d.shape[1]}-D points, {L} segments)"
             raise AnswerProblem(f"{case}: {exc.message}") from None

@@ -5,9 +5,9 @@ such as ``expected=(3 - 1) / (1 - 0)``.  The expected values are computed here, 
 time, from the question's data with ``course_lib`` -- never printed::
 
     from course_lib.checks.lectures import check_number, check_vector, quiz
-    check_number("lecture04.q2", my_beta1)
-    check_vector("lecture01.q4", my_tangent)      # a plane vector [x, y]
-    quiz("lecture05.q1", my_answer)              # multiple choice: letters
+    check_number("lecture06.q2", my_beta1)
+    check_vector("lecture02.q4", my_tangent)      # a plane vector [x, y]
+    quiz("lecture07.q1", my_answer)              # multiple choice: letters
 
 Multiple-choice questions in a lecture are practice: the course grades homework only, and a
 multiple-choice answer can always be found by trying the few letter sets there are.  So the
@@ -31,7 +31,46 @@ from ._core import Verdict, as_choice, as_number, as_vector, run_validate
 __all__ = ["LECTURE_QUESTIONS", "check_number", "check_vector", "quiz"]
 
 
-def _speed_after_reparametrization() -> float:  # lecture 1, Q3: speed of q(2v) at the joint
+def _a_for_c2() -> float:  # lecture 1, Q2: q = (u, u²), r = (1 + t, 1 + 2t + a t²): C2
+    import sympy as sp
+
+    u, t, a = sp.symbols("u t a")
+    q, r = sp.Matrix([u, u**2]), sp.Matrix([1 + t, 1 + 2 * t + a * t**2])
+    second = r.diff(t, 2).subs(t, 0) - q.diff(u, 2).subs(u, 1)
+    return float(sp.solve(second[1], a)[0])
+
+
+def _curvature_vector_of_q() -> np.ndarray:  # lecture 4, Q2: K of q at the joint
+    import sympy as sp
+
+    from ..differential_geometry import arc_length_derivatives
+    from ..parametrization import ParametricCurve
+
+    u = sp.Symbol("u")
+    q1, q2 = np.array([2.0, 0.0]), np.array([1.0, 3.0])  # q'(1), q''(1)
+    q = ParametricCurve.from_sympy(  # the quadratic with these derivatives at u = 1
+        [q1[k] * (u - 1) + q2[k] * (u - 1) ** 2 / 2 for k in (0, 1)], u, (0.0, 1.0))
+    return np.asarray(arc_length_derivatives(q, 1.0, 2)[1], dtype=float).ravel()
+
+
+def _b_for_g2() -> float:  # lecture 4, Q3: r'' = (0, b) for a common curvature vector
+    r1 = np.array([3.0, 0.0])  # r'(0)
+    # r'' = (0, b) is perpendicular to r' = r1, so r's curvature vector is (0, b) / |r1|²
+    return float(_curvature_vector_of_q()[1] * (r1 @ r1))
+
+
+def _unit_tangent_at_joint() -> np.ndarray:  # lecture 1, Q3: T of q(u) = (u, u²) at u = 1
+    import sympy as sp
+
+    from ..differential_geometry import unit_tangent
+    from ..parametrization import ParametricCurve
+
+    u = sp.Symbol("u")
+    q = ParametricCurve.from_sympy([u, u**2], u, (0.0, 1.0))
+    return np.asarray(unit_tangent(q, 1.0), dtype=float).ravel()
+
+
+def _speed_after_reparametrization() -> float:  # lecture 2, Q3: speed of q(2v) at the joint
     import sympy as sp
 
     from ..differential_geometry import speed
@@ -44,7 +83,7 @@ def _speed_after_reparametrization() -> float:  # lecture 1, Q3: speed of q(2v) 
     return float(speed(q_tilde, 0.5))
 
 
-def _beta2_of_a_joint() -> float:  # lecture 2, Q3: the second Beta-constraint solved for β2
+def _beta2_of_a_joint() -> float:  # lecture 3, Q3: the second Beta-constraint solved for β2
     from ..beta_constraints import solve_shape_parameters
 
     q_derivs = [np.array([1.0, 0.0]), np.array([0.0, 1.0])]
@@ -52,7 +91,7 @@ def _beta2_of_a_joint() -> float:  # lecture 2, Q3: the second Beta-constraint s
     return float(solve_shape_parameters(q_derivs, r_derivs).betas[1])
 
 
-def _kappa_circle_radius_2() -> float:  # lecture 3, Q2: signed curvature, radius 2, ccw
+def _kappa_circle_radius_2() -> float:  # lecture 5, Q2: signed curvature, radius 2, ccw
     import sympy as sp
 
     from ..differential_geometry import signed_curvature
@@ -63,7 +102,7 @@ def _kappa_circle_radius_2() -> float:  # lecture 3, Q2: signed curvature, radiu
     return float(signed_curvature(circle, 1.0))
 
 
-def _kappa_parabola_vertex() -> float:  # lecture 3, Q3: signed curvature of (t, t²) at t = 0
+def _kappa_parabola_vertex() -> float:  # lecture 5, Q3: signed curvature of (t, t²) at t = 0
     import sympy as sp
 
     from ..differential_geometry import signed_curvature
@@ -74,40 +113,40 @@ def _kappa_parabola_vertex() -> float:  # lecture 3, Q3: signed curvature of (t,
     return float(signed_curvature(parabola, 0.0))
 
 
-def _joint_x_for_knots_0_2_3() -> float:  # lecture 4, Q3: p3 between p2 = (0, 0), p4 = (3, 0)
+def _joint_x_for_knots_0_2_3() -> float:  # lecture 6, Q3: p3 between p2 = (0, 0), p4 = (3, 0)
     from ..knot_splines import g1_knot_spline
 
     d = np.array([[-1.0, 1.0], [-0.5, 1.0], [0.0, 0.0], [3.0, 0.0], [3.5, 1.0], [4.0, 1.0]])
     return float(g1_knot_spline(d, np.array([0.0, 2.0, 3.0])).segments[1][0][0])
 
 
-def _beta1_for_knots() -> float:  # lecture 4, Q2: knots 0, 1, 3, local parameters
+def _beta1_for_knots() -> float:  # lecture 6, Q2: knots 0, 1, 3, local parameters
     from ..knot_splines import knot_ratio_beta1
 
     return float(knot_ratio_beta1(np.array([0.0, 1.0, 3.0]))[0])
 
 
-def _gamma_uniform() -> float:  # lecture 5, Q2: γ of eq. (12.1), d = 3, β1 = 1, β2 = 0
+def _gamma_uniform() -> float:  # lecture 7, Q2: γ of eq. (12.1), d = 3, β1 = 1, β2 = 0
     from ..stitching import farin_boehm_gamma
 
     return float(farin_boehm_gamma(1.0, 0.0, d=3))
 
 
-def _junction_x_quadratic() -> float:  # lecture 6, Q1: leg (0, 0) -> (4, 0), β_(1,0) = 3
+def _junction_x_quadratic() -> float:  # lecture 8, Q1: leg (0, 0) -> (4, 0), β_(1,0) = 3
     from ..beta_splines import quadratic_beta_spline
 
     P = np.array([[0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [0.0, 3.0]])
     return float(quadratic_beta_spline(P, beta1=[3.0, 1.0, 1.0]).segments[0][0][0])
 
 
-def _gamma_pole_beta2() -> float:  # lecture 6, Q2: 1/γ is affine in β2; its zero for β1 = 1
+def _gamma_pole_beta2() -> float:  # lecture 8, Q2: 1/γ is affine in β2; its zero for β1 = 1
     from ..stitching import farin_boehm_gamma
 
     at0, at1 = 1.0 / farin_boehm_gamma(1.0, 0.0, d=3), 1.0 / farin_boehm_gamma(1.0, 1.0, d=3)
     return float(-at0 / (at1 - at0))
 
 
-def _w1_x_for_beta1_half() -> float:  # lecture 5, Q3: x of W_1, V_2 = (1, 2), V_3 = (3, 2)
+def _w1_x_for_beta1_half() -> float:  # lecture 7, Q3: x of W_1, V_2 = (1, 2), V_3 = (3, 2)
     from ..stitching import g1_stitch
 
     q = np.array([[0.0, 0.0], [0.5, 1.0], [1.0, 2.0], [3.0, 2.0]])
@@ -115,31 +154,31 @@ def _w1_x_for_beta1_half() -> float:  # lecture 5, Q3: x of W_1, V_2 = (1, 2), V
     return float(stitched.segments[1][1][0])
 
 
-def _beta2_in_course_convention() -> float:  # lecture 7, Q2: seed 001's (2, 1, 0) -> β2
+def _beta2_in_course_convention() -> float:  # lecture 9, Q2: seed 001's (2, 1, 0) -> β2
     from ..seed_formulas import inverse_betas
 
     return float(inverse_betas((2.0, 1.0, 0.0))[1])
 
 
-def _unknowns_g4() -> float:  # lecture 7, Q3: (n + 2)² coefficients of the G^4 weights
+def _unknowns_g4() -> float:  # lecture 9, Q3: (n + 2)² coefficients of the G^4 weights
     from ..seed_formulas import blending_system
 
     return float(len(blending_system(4, [1, 0, 0, 0])[1]))
 
 
-def _shape_functions_g2() -> float:  # lecture 8, Q1: seed 001 counts n(n + 3) for G^n
+def _shape_functions_g2() -> float:  # lecture 10, Q1: seed 001 counts n(n + 3) for G^n
     from ..surfaces import count_shape_functions
 
     return float(count_shape_functions(2))
 
 
-def _free_shape_functions_g3() -> float:  # lecture 8, Q2: n(n + 3) less the 2n along the boundary
+def _free_shape_functions_g3() -> float:  # lecture 10, Q2: n(n + 3) less the 2n along the boundary
     from ..surfaces import count_shape_functions
 
     return float(count_shape_functions(3) - 2 * 3)
 
 
-def _unit_tangent_after_reparametrization() -> np.ndarray:  # lecture 1, Q4
+def _unit_tangent_after_reparametrization() -> np.ndarray:  # lecture 2, Q4
     # Q(u) = (3u, 4u²) reparametrized by f(v) = (v + v²)/2: unit tangent of Q∘f at v = 1/2
     import sympy as sp
 
@@ -153,7 +192,7 @@ def _unit_tangent_after_reparametrization() -> np.ndarray:  # lecture 1, Q4
     return np.asarray(unit_tangent(Reparametrized(Q, f), 0.5), dtype=float).ravel()
 
 
-def _third_derivative_from_betas() -> np.ndarray:  # lecture 2, Q4: r'''(0) at a G3 joint
+def _third_derivative_from_betas() -> np.ndarray:  # lecture 3, Q4: r'''(0) at a G3 joint
     from ..beta_constraints import beta_constraints
 
     bc = beta_constraints(3)
@@ -163,7 +202,7 @@ def _third_derivative_from_betas() -> np.ndarray:  # lecture 2, Q4: r'''(0) at a
     return np.array([float(third.subs(at)) for at in at_q])
 
 
-def _curvature_jump_at_implied_point() -> float:  # lecture 9, Q4: κ_r − κ_q at M, in 1/em
+def _curvature_jump_at_implied_point() -> float:  # lecture 11, Q4: κ_r − κ_q at M, in 1/em
     from ..curve import PiecewiseBezier
     from ..differential_geometry import signed_curvature
 
@@ -175,20 +214,33 @@ def _curvature_jump_at_implied_point() -> float:  # lecture 9, Q4: κ_r − κ_q
     return float(np.squeeze(kappa_r - kappa_q))
 
 
-def _g2_points_of_eight() -> float:  # lecture 9, Q5: G2 joints of DejaVu Sans' "8"
+def _g2_points_of_eight() -> float:  # lecture 11, Q5: G2 joints of DejaVu Sans' "8"
     from ..outlines import glyph_outline, glyph_summary
 
     return float(glyph_summary(glyph_outline("8")).g2)
 
 
-def _corners_of_ampersand() -> float:  # lecture 9, Q2: corners of DejaVu Sans' "&"
+def _corners_of_ampersand() -> float:  # lecture 11, Q2: corners of DejaVu Sans' "&"
     from ..outlines import glyph_outline, glyph_summary
 
     return float(glyph_summary(glyph_outline("&")).corners)
 
 
 # ------------------------------------------------------------- multiple choice (practice)
-def _w1_choice() -> str:  # lecture 5, Q1: W1 for β1 = 3, tried on a concrete cubic
+def _corner_pair_choice() -> str:  # lecture 1, Q1: q = (u³, -u³), r = (t³, t³) at 0
+    import sympy as sp
+
+    u, t = sp.symbols("u t")
+    q, r = sp.Matrix([u**3, -(u**3)]), sp.Matrix([t**3, t**3])
+    at_joint = [(q.diff(u, k).subs(u, 0), r.diff(t, k).subs(t, 0)) for k in range(4)]
+    c2 = all(a == b for a, b in at_joint[:3])
+    moving = at_joint[1][0] != sp.zeros(2, 1)
+    corner = sp.simplify(at_joint[3][0].dot(at_joint[3][1])) == 0  # directions (1,-1), (1,1)
+    truths = {"a": c2, "b": moving, "c": corner, "d": moving}  # regular: velocity never 0
+    return ", ".join(k for k, v in truths.items() if v)
+
+
+def _w1_choice() -> str:  # lecture 7, Q1: W1 for β1 = 3, tried on a concrete cubic
     from ..stitching import g1_stitch
 
     V = np.array([[0.0, 0.0], [1.0, 1.0], [1.0, 2.0], [3.0, 2.0]])
@@ -197,14 +249,14 @@ def _w1_choice() -> str:  # lecture 5, Q1: W1 for β1 = 3, tried on a concrete c
     return next(k for k, p in options.items() if np.allclose(p, W1))
 
 
-def _knot_ratio_choice() -> str:  # lecture 4, Q1: |p2 p3| : |p3 p4| for knots 0, 1, 3
+def _knot_ratio_choice() -> str:  # lecture 6, Q1: |p2 p3| : |p3 p4| for knots 0, 1, 3
     from ..knot_splines import knot_ratio_beta1
 
     beta1 = float(knot_ratio_beta1(np.array([0.0, 1.0, 3.0]))[0])  # |p3 p4| / |p2 p3|
     return {1.0: "a", 2.0: "b", 0.5: "c", 3.0: "d"}[beta1]
 
 
-def _quartic_order_choice() -> str:  # lecture 7, Q1: β = (1, 100, 0) -- C1 but not C2
+def _quartic_order_choice() -> str:  # lecture 9, Q1: β = (1, 100, 0) -- C1 but not C2
     from ..continuity import curve_continuity
     from ..higher_order import quartic_beta_spline
 
@@ -234,52 +286,63 @@ class _Choice:
 
 _CHOICES: dict[str, _Choice] = {
     "lecture01.q1": _Choice(
+        "q(u) = (u³, -u³) on [-1, 0] and r(t) = (t³, t³) on [0, 1]: which are true?",
+        ("they meet with C2 continuity", "the velocity at the joint is not zero",
+         "the curve they draw has a corner", "both parametrizations are regular"),
+        _corner_pair_choice,
+    ),
+    "lecture02.q1": _Choice(
         "Which are intrinsic (equal for equivalent parametrizations)?",
         ("the velocity vector", "the unit tangent", "the speed", "the curvature"),
         lambda: "b, d",  # unit tangent and curvature
     ),
-    "lecture01.q2": _Choice(
+    "lecture02.q2": _Choice(
         "q(u) = (2u, u) on [0, 1] and r(t) = (4t + 2, 2t + 1) on [0, 1/2] meet with",
         ("C1 continuity", "G1 but not C1 continuity", "neither C1 nor G1 continuity"),
         lambda: "b",  # Example 1 of Barsky & DeRose 1988
     ),
-    "lecture02.q1": _Choice(
+    "lecture03.q1": _Choice(
         "At a G3 joint: how many shape parameters, which positive?",
         ("2; both", "3; only β1", "3; all three", "4; only β1"),
         lambda: "b",
     ),
-    "lecture02.q2": _Choice(
+    "lecture03.q2": _Choice(
         "r'(0) = 2 q'(1), r''(0) = 4 q''(1) + 5 q'(1): the joint is",
         ("C2", "G1 but not G2", "G2 but not C1", "not even G1"),
         lambda: "c",  # β1 = 2, β2 = 5
     ),
-    "lecture04.q1": _Choice(
+    "lecture06.q1": _Choice(
         "Ratio |p2p3| : |p3p4| for knots 0, 1, 3?",
         ("1 : 1", "1 : 2", "2 : 1", "1 : 3"),
         _knot_ratio_choice,
     ),
-    "lecture03.q1": _Choice(
+    "lecture04.q1": _Choice(
+        "Same unit tangent at J, curvature 1 before and 2 after: the joint is",
+        ("G2", "G1 but not G2", "not even G1", "G2 for a suitable β2"),
+        lambda: "b",  # Theorem 1: G2 needs a common curvature vector; β2 cannot change κ
+    ),
+    "lecture05.q1": _Choice(
         "The osculating circle at an inflection is",
         ("a point", "a circle of radius 0", "a straight line (radius ∞)", "undefined because T is"),
         lambda: "c",  # κ = 0: radius 1/|κ| = ∞
     ),
-    "lecture05.q1": _Choice(
+    "lecture07.q1": _Choice(
         "W1 for β1 = 3?",
         ("V3 + 3 (V3 - V2)", "V3 + (V3 - V2)/3", "3 V3 - V2", "anywhere on the line V2V3"),
         _w1_choice,
     ),
-    "lecture07.q1": _Choice(
+    "lecture09.q1": _Choice(
         "β1 = 1, β2 = 100, β3 = 0 gives",
         ("C3", "C1 but not C2", "G3 but not even C1", "neither C1 nor G3"),
         _quartic_order_choice,
     ),
-    "lecture09.q1": _Choice(
+    "lecture11.q1": _Choice(
         "At an implied on-curve point the two segments are",
         ("C1 with β1 = 1", "G1 but never C1", "always G2",
          "G2 exactly when the chord P0 P2 is perpendicular to AB"),
         lambda: "a",  # velocity B - A on both sides
     ),
-    "lecture09.q3": _Choice(
+    "lecture11.q3": _Choice(
         "After the change",
         ("the font's on-curve points still lie on the outline",
          "every joint is G2, but the outline moved by about 0.01 em",
@@ -291,29 +354,33 @@ _CHOICES: dict[str, _Choice] = {
 
 #: question id -> function computing the expected value from the question's data
 _NUMBERS: dict[str, Callable[[], float]] = {
-    "lecture01.q3": _speed_after_reparametrization,
-    "lecture02.q3": _beta2_of_a_joint,
-    "lecture03.q2": _kappa_circle_radius_2,
-    "lecture03.q3": _kappa_parabola_vertex,
-    "lecture04.q2": _beta1_for_knots,
-    "lecture04.q3": _joint_x_for_knots_0_2_3,
-    "lecture05.q2": _gamma_uniform,
-    "lecture05.q3": _w1_x_for_beta1_half,
-    "lecture06.q1": _junction_x_quadratic,
-    "lecture06.q2": _gamma_pole_beta2,
-    "lecture07.q2": _beta2_in_course_convention,
-    "lecture07.q3": _unknowns_g4,
-    "lecture08.q1": _shape_functions_g2,
-    "lecture08.q2": _free_shape_functions_g3,
-    "lecture09.q2": _corners_of_ampersand,
-    "lecture09.q4": _curvature_jump_at_implied_point,
-    "lecture09.q5": _g2_points_of_eight,
+    "lecture01.q2": _a_for_c2,
+    "lecture02.q3": _speed_after_reparametrization,
+    "lecture03.q3": _beta2_of_a_joint,
+    "lecture04.q3": _b_for_g2,
+    "lecture05.q2": _kappa_circle_radius_2,
+    "lecture05.q3": _kappa_parabola_vertex,
+    "lecture06.q2": _beta1_for_knots,
+    "lecture06.q3": _joint_x_for_knots_0_2_3,
+    "lecture07.q2": _gamma_uniform,
+    "lecture07.q3": _w1_x_for_beta1_half,
+    "lecture08.q1": _junction_x_quadratic,
+    "lecture08.q2": _gamma_pole_beta2,
+    "lecture09.q2": _beta2_in_course_convention,
+    "lecture09.q3": _unknowns_g4,
+    "lecture10.q1": _shape_functions_g2,
+    "lecture10.q2": _free_shape_functions_g3,
+    "lecture11.q2": _corners_of_ampersand,
+    "lecture11.q4": _curvature_jump_at_implied_point,
+    "lecture11.q5": _g2_points_of_eight,
 }
 
 #: question id -> function computing the expected plane vector from the question's data
 _VECTORS: dict[str, Callable[[], np.ndarray]] = {
-    "lecture01.q4": _unit_tangent_after_reparametrization,
-    "lecture02.q4": _third_derivative_from_betas,
+    "lecture01.q3": _unit_tangent_at_joint,
+    "lecture02.q4": _unit_tangent_after_reparametrization,
+    "lecture03.q4": _third_derivative_from_betas,
+    "lecture04.q2": _curvature_vector_of_q,
 }
 
 _KINDS = {"number": _NUMBERS, "vector": _VECTORS, "choice": _CHOICES}

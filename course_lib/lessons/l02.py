@@ -1,4 +1,5 @@
-"""The tools of lecture 02, *Beta-constraints* (``notebooks/02_beta_constraints.ipynb``).
+"""The tools of lecture 02, *Reparametrization and geometric continuity*
+(``notebooks/02_reparametrization.ipynb``).
 
 The lecture opens with ``from course_lib.lessons.l02 import *``; every name below is
 defined and documented in the module it is imported from.
@@ -7,36 +8,41 @@ defined and documented in the module it is imported from.
 from __future__ import annotations
 
 from .. import PiecewiseBezier
-from ..beta_constraints import beta_constraints, solve_shape_parameters
 from ..checks.lectures import check_number, check_vector, quiz
-from ..continuity import curve_continuity
-from ..differential_geometry import arc_length_derivatives
+from ..continuity import joint_continuity
+from ..differential_geometry import curvature, signed_curvature, speed, unit_tangent
 from ..joint_reparametrization import onto_change_of_variables
-from ..plotting import new_figure, plot_curvature_comb, plot_curvature_profile, plot_curve
-from ..plotting.lecture_figures import combs_figure, names_figure
-from ..reparametrization import ChangeOfVariables
-from ..seed_formulas import inverse_betas
-from ..stitching import g2_stitch
-from ..widgets import g2_stitch_demo
+from ..parametrization import ParametricCurve
+from ..plotting import new_figure, plot_curve, plot_frame, plot_vectors, plot_velocity
+from ..plotting.lecture_figures import models_figure, reparametrization_figure
+from ..plotting.reparametrization_figure import plot_reparametrization
+from ..plotting.style import ROLE_COLORS
+from ..reparametrization import ChangeOfVariables, Reparametrized, are_equivalent
+from ..widgets import reparametrization_demo
 
 __all__ = [
+    "ROLE_COLORS",
     "ChangeOfVariables",
+    "ParametricCurve",
     "PiecewiseBezier",
-    "arc_length_derivatives",
-    "beta_constraints",
+    "Reparametrized",
+    "are_equivalent",
     "check_number",
     "check_vector",
-    "combs_figure",
-    "curve_continuity",
-    "g2_stitch",
-    "g2_stitch_demo",
-    "inverse_betas",
-    "names_figure",
+    "curvature",
+    "joint_continuity",
+    "models_figure",
     "new_figure",
     "onto_change_of_variables",
-    "plot_curvature_comb",
-    "plot_curvature_profile",
     "plot_curve",
+    "plot_frame",
+    "plot_reparametrization",
+    "plot_vectors",
+    "plot_velocity",
     "quiz",
-    "solve_shape_parameters",
+    "reparametrization_demo",
+    "reparametrization_figure",
+    "signed_curvature",
+    "speed",
+    "unit_tangent",
 ]

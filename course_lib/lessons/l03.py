@@ -1,4 +1,4 @@
-"""The tools of lecture 03, *Curvature of plane curves* (``notebooks/03_curvature_of_plane_curves.ipynb``).
+"""The tools of lecture 03, *Beta-constraints* (``notebooks/03_beta_constraints.ipynb``).
 
 The lecture opens with ``from course_lib.lessons.l03 import *``; every name below is
 defined and documented in the module it is imported from.
@@ -6,37 +6,26 @@ defined and documented in the module it is imported from.
 
 from __future__ import annotations
 
-from scipy.spatial.distance import pdist
-
 from .. import PiecewiseBezier
-from .. import differential_geometry as dg
-from ..checks.lectures import check_number, quiz
-from ..closeness import closeness, rippled_circle
-from ..parametrization import ParametricCurve
-from ..plotting import new_figure, plot_curve, plot_frame, plot_osculating_circle
-from ..plotting.closeness_figure import plot_closeness
-from ..plotting.lecture_figures import closeness_figure, frame_figure, rebuilt_figure
-from ..reparametrization import ChangeOfVariables, Reparametrized
-from ..widgets import curvature_comb_demo
+from ..beta_constraints import beta_constraints, solve_shape_parameters
+from ..checks.lectures import check_number, check_vector, quiz
+from ..joint_reparametrization import onto_change_of_variables
+from ..plotting import new_figure, plot_curve
+from ..plotting.lecture_figures import names_figure
+from ..reparametrization import ChangeOfVariables
+from ..seed_formulas import inverse_betas
 
 __all__ = [
     "ChangeOfVariables",
-    "ParametricCurve",
     "PiecewiseBezier",
-    "Reparametrized",
+    "beta_constraints",
     "check_number",
-    "closeness",
-    "closeness_figure",
-    "curvature_comb_demo",
-    "dg",
-    "frame_figure",
+    "check_vector",
+    "inverse_betas",
+    "names_figure",
     "new_figure",
-    "pdist",
-    "plot_closeness",
+    "onto_change_of_variables",
     "plot_curve",
-    "plot_frame",
-    "plot_osculating_circle",
     "quiz",
-    "rebuilt_figure",
-    "rippled_circle",
+    "solve_shape_parameters",
 ]

@@ -1,4 +1,5 @@
-"""The tools of lecture 04, *G1 Bézier splines with knots* (``notebooks/04_g1_knot_bezier_splines.ipynb``).
+"""The tools of lecture 04, *Arc length and Theorem 1*
+(``notebooks/04_arc_length_and_theorem_1.ipynb``).
 
 The lecture opens with ``from course_lib.lessons.l04 import *``; every name below is
 defined and documented in the module it is imported from.
@@ -7,28 +8,26 @@ defined and documented in the module it is imported from.
 from __future__ import annotations
 
 from .. import PiecewiseBezier
-from ..checks.lectures import check_number, quiz
+from ..checks.lectures import check_number, check_vector, quiz
 from ..continuity import curve_continuity
-from ..knot_splines import g1_knot_spline
-from ..plotting import new_figure, plot_control_polygon, plot_curve
-from ..plotting.constructions import plot_knot_joint_construction
-from ..plotting.lecture_figures import g1_joint_figure, knot_joint_figure, splines_figure
-from ..seed_formulas import barycentric_weights
-from ..widgets import knot_spline_demo
+from ..differential_geometry import arc_length_derivatives
+from ..plotting import new_figure, plot_curvature_comb, plot_curvature_profile, plot_curve
+from ..plotting.lecture_figures import combs_figure
+from ..stitching import g2_stitch
+from ..widgets import g2_stitch_demo
 
 __all__ = [
     "PiecewiseBezier",
-    "barycentric_weights",
+    "arc_length_derivatives",
     "check_number",
+    "check_vector",
+    "combs_figure",
     "curve_continuity",
-    "g1_joint_figure",
-    "g1_knot_spline",
-    "knot_joint_figure",
-    "knot_spline_demo",
+    "g2_stitch",
+    "g2_stitch_demo",
     "new_figure",
-    "plot_control_polygon",
+    "plot_curvature_comb",
+    "plot_curvature_profile",
     "plot_curve",
-    "plot_knot_joint_construction",
     "quiz",
-    "splines_figure",
 ]

@@ -1,4 +1,4 @@
-"""The tools of lecture 05, *Stitching Bézier curves* (``notebooks/05_stitching_bezier_curves.ipynb``).
+"""The tools of lecture 05, *Curvature of plane curves* (``notebooks/05_curvature_of_plane_curves.ipynb``).
 
 The lecture opens with ``from course_lib.lessons.l05 import *``; every name below is
 defined and documented in the module it is imported from.
@@ -6,42 +6,37 @@ defined and documented in the module it is imported from.
 
 from __future__ import annotations
 
-from .. import PiecewiseBezier, bezier
-from ..catmull_rom import catmull_rom
+from scipy.spatial.distance import pdist
+
+from .. import PiecewiseBezier
+from .. import differential_geometry as dg
 from ..checks.lectures import check_number, quiz
-from ..continuity import curve_continuity
-from ..plotting import new_figure, plot_control_polygon, plot_curve
-from ..plotting.constructions import plot_farin_boehm, plot_stitching
-from ..plotting.lecture_figures import (
-    bezier_figure,
-    catmull_rom_figure,
-    degree_raising_figure,
-    farin_boehm_figure,
-    g1_stitching_figure,
-)
-from ..stitching import farin_boehm, g1_stitch, g2_stitch
-from ..widgets import catmull_rom_demo, g2_stitch_demo
+from ..closeness import closeness, rippled_circle
+from ..parametrization import ParametricCurve
+from ..plotting import new_figure, plot_curve, plot_frame, plot_osculating_circle
+from ..plotting.closeness_figure import plot_closeness
+from ..plotting.lecture_figures import closeness_figure, frame_figure, rebuilt_figure
+from ..reparametrization import ChangeOfVariables, Reparametrized
+from ..widgets import curvature_comb_demo
 
 __all__ = [
+    "ChangeOfVariables",
+    "ParametricCurve",
     "PiecewiseBezier",
-    "bezier",
-    "bezier_figure",
-    "catmull_rom",
-    "catmull_rom_demo",
-    "catmull_rom_figure",
+    "Reparametrized",
     "check_number",
-    "curve_continuity",
-    "degree_raising_figure",
-    "farin_boehm",
-    "farin_boehm_figure",
-    "g1_stitch",
-    "g1_stitching_figure",
-    "g2_stitch",
-    "g2_stitch_demo",
+    "closeness",
+    "closeness_figure",
+    "curvature_comb_demo",
+    "dg",
+    "frame_figure",
     "new_figure",
-    "plot_control_polygon",
+    "pdist",
+    "plot_closeness",
     "plot_curve",
-    "plot_farin_boehm",
-    "plot_stitching",
+    "plot_frame",
+    "plot_osculating_circle",
     "quiz",
+    "rebuilt_figure",
+    "rippled_circle",
 ]

@@ -1,4 +1,4 @@
-"""The tools of lecture 06, *Beta-splines* (``notebooks/06_beta_splines.ipynb``).
+"""The tools of lecture 06, *G1 Bézier splines with knots* (``notebooks/06_g1_knot_bezier_splines.ipynb``).
 
 The lecture opens with ``from course_lib.lessons.l06 import *``; every name below is
 defined and documented in the module it is imported from.
@@ -7,44 +7,28 @@ defined and documented in the module it is imported from.
 from __future__ import annotations
 
 from .. import PiecewiseBezier
-from ..beta_splines import cubic_beta_spline, design_beta_spline, quadratic_beta_spline
-from ..checks.lectures import check_number
+from ..checks.lectures import check_number, quiz
 from ..continuity import curve_continuity
-from ..plotting import new_figure, plot_control_polygon, plot_curvature_profile, plot_curve
-from ..plotting.constructions import plot_beta_spline_construction
-from ..plotting.lecture_figures import (
-    cubic_beta_spline_figure,
-    curvature_profiles_figure,
-    quadratic_beta_spline_figure,
-)
-from ..seed_formulas import (
-    blending_basis,
-    blending_system,
-    cubic_beta_spline_printed,
-    cubic_beta_spline_reciprocal,
-    gamma_printed,
-)
-from ..widgets import beta_spline_demo
+from ..knot_splines import g1_knot_spline
+from ..plotting import new_figure, plot_control_polygon, plot_curve
+from ..plotting.constructions import plot_knot_joint_construction
+from ..plotting.lecture_figures import g1_joint_figure, knot_joint_figure, splines_figure
+from ..seed_formulas import barycentric_weights
+from ..widgets import knot_spline_demo
 
 __all__ = [
     "PiecewiseBezier",
-    "beta_spline_demo",
-    "blending_basis",
-    "blending_system",
+    "barycentric_weights",
     "check_number",
-    "cubic_beta_spline",
-    "cubic_beta_spline_figure",
-    "cubic_beta_spline_printed",
-    "cubic_beta_spline_reciprocal",
-    "curvature_profiles_figure",
     "curve_continuity",
-    "design_beta_spline",
-    "gamma_printed",
+    "g1_joint_figure",
+    "g1_knot_spline",
+    "knot_joint_figure",
+    "knot_spline_demo",
     "new_figure",
-    "plot_beta_spline_construction",
     "plot_control_polygon",
-    "plot_curvature_profile",
     "plot_curve",
-    "quadratic_beta_spline",
-    "quadratic_beta_spline_figure",
+    "plot_knot_joint_construction",
+    "quiz",
+    "splines_figure",
 ]

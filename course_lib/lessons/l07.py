@@ -1,4 +1,4 @@
-"""The tools of lecture 07, *Higher order* (``notebooks/07_higher_order.ipynb``).
+"""The tools of lecture 07, *Stitching Bézier curves* (``notebooks/07_stitching_bezier_curves.ipynb``).
 
 The lecture opens with ``from course_lib.lessons.l07 import *``; every name below is
 defined and documented in the module it is imported from.
@@ -6,31 +6,42 @@ defined and documented in the module it is imported from.
 
 from __future__ import annotations
 
-from ..beta_constraints import beta_coefficients
-from ..beta_splines import cubic_beta_spline
+from .. import PiecewiseBezier, bezier
+from ..catmull_rom import catmull_rom
 from ..checks.lectures import check_number, quiz
 from ..continuity import curve_continuity
-from ..higher_order import beta_spline, gn_beta_spline_basis, quartic_beta_spline
 from ..plotting import new_figure, plot_control_polygon, plot_curve
-from ..plotting.lecture_figures import quartic_conventions_figure
-from ..seed_formulas import blending_basis, blending_system, inverse_betas
-from ..widgets import quartic_beta_spline_demo
+from ..plotting.constructions import plot_farin_boehm, plot_stitching
+from ..plotting.lecture_figures import (
+    bezier_figure,
+    catmull_rom_figure,
+    degree_raising_figure,
+    farin_boehm_figure,
+    g1_stitching_figure,
+)
+from ..stitching import farin_boehm, g1_stitch, g2_stitch
+from ..widgets import catmull_rom_demo, g2_stitch_demo
 
 __all__ = [
-    "beta_coefficients",
-    "beta_spline",
-    "blending_basis",
-    "blending_system",
+    "PiecewiseBezier",
+    "bezier",
+    "bezier_figure",
+    "catmull_rom",
+    "catmull_rom_demo",
+    "catmull_rom_figure",
     "check_number",
-    "cubic_beta_spline",
     "curve_continuity",
-    "gn_beta_spline_basis",
-    "inverse_betas",
+    "degree_raising_figure",
+    "farin_boehm",
+    "farin_boehm_figure",
+    "g1_stitch",
+    "g1_stitching_figure",
+    "g2_stitch",
+    "g2_stitch_demo",
     "new_figure",
     "plot_control_polygon",
     "plot_curve",
-    "quartic_beta_spline",
-    "quartic_beta_spline_demo",
-    "quartic_conventions_figure",
+    "plot_farin_boehm",
+    "plot_stitching",
     "quiz",
 ]

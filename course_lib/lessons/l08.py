@@ -1,4 +1,4 @@
-"""The tools of lecture 08, *Geometric continuity of surfaces* (``notebooks/08_surfaces.ipynb``).
+"""The tools of lecture 08, *Beta-splines* (``notebooks/08_beta_splines.ipynb``).
 
 The lecture opens with ``from course_lib.lessons.l08 import *``; every name below is
 defined and documented in the module it is imported from.
@@ -6,25 +6,45 @@ defined and documented in the module it is imported from.
 
 from __future__ import annotations
 
+from .. import PiecewiseBezier
+from ..beta_splines import cubic_beta_spline, design_beta_spline, quadratic_beta_spline
 from ..checks.lectures import check_number
+from ..continuity import curve_continuity
+from ..plotting import new_figure, plot_control_polygon, plot_curvature_profile, plot_curve
+from ..plotting.constructions import plot_beta_spline_construction
 from ..plotting.lecture_figures import (
-    domain_and_patch_figure,
-    parameter_lines_figure,
-    patch_pairs_figure,
+    cubic_beta_spline_figure,
+    curvature_profiles_figure,
+    quadratic_beta_spline_figure,
 )
-from ..plotting.surface_figures import plot_domain_and_patch, plot_parameter_lines
-from ..plotting.surfaces3d import plot_patch_pair
-from ..surfaces import BezierPatch, g1_neighbour_patch, tangent_plane_continuity
+from ..seed_formulas import (
+    blending_basis,
+    blending_system,
+    cubic_beta_spline_printed,
+    cubic_beta_spline_reciprocal,
+    gamma_printed,
+)
+from ..widgets import beta_spline_demo
 
 __all__ = [
-    "BezierPatch",
+    "PiecewiseBezier",
+    "beta_spline_demo",
+    "blending_basis",
+    "blending_system",
     "check_number",
-    "domain_and_patch_figure",
-    "g1_neighbour_patch",
-    "parameter_lines_figure",
-    "patch_pairs_figure",
-    "plot_domain_and_patch",
-    "plot_parameter_lines",
-    "plot_patch_pair",
-    "tangent_plane_continuity",
+    "cubic_beta_spline",
+    "cubic_beta_spline_figure",
+    "cubic_beta_spline_printed",
+    "cubic_beta_spline_reciprocal",
+    "curvature_profiles_figure",
+    "curve_continuity",
+    "design_beta_spline",
+    "gamma_printed",
+    "new_figure",
+    "plot_beta_spline_construction",
+    "plot_control_polygon",
+    "plot_curvature_profile",
+    "plot_curve",
+    "quadratic_beta_spline",
+    "quadratic_beta_spline_figure",
 ]

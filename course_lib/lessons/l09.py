@@ -1,4 +1,4 @@
-"""The tools of lecture 09, *Are letters smooth?* (``notebooks/09_are_letters_smooth.ipynb``).
+"""The tools of lecture 09, *Higher order* (``notebooks/09_higher_order.ipynb``).
 
 The lecture opens with ``from course_lib.lessons.l09 import *``; every name below is
 defined and documented in the module it is imported from.
@@ -6,40 +6,31 @@ defined and documented in the module it is imported from.
 
 from __future__ import annotations
 
-from ..beta_splines import cubic_beta_spline, quadratic_beta_spline
+from ..beta_constraints import beta_coefficients
+from ..beta_splines import cubic_beta_spline
 from ..checks.lectures import check_number, quiz
-from ..continuity import curve_continuity, joint_continuity
-from ..outlines import (
-    Contour,
-    Outline,
-    classify_joints,
-    font_summary,
-    glyph_outline,
-    glyph_summary,
-    svg_outline,
-)
-from ..plotting import new_figure, plot_outline
-from ..plotting.lecture_figures import glyph_points_figure, glyphs_figure, outlines_figure
-from ..widgets import glyph_demo
+from ..continuity import curve_continuity
+from ..higher_order import beta_spline, gn_beta_spline_basis, quartic_beta_spline
+from ..plotting import new_figure, plot_control_polygon, plot_curve
+from ..plotting.lecture_figures import quartic_conventions_figure
+from ..seed_formulas import blending_basis, blending_system, inverse_betas
+from ..widgets import quartic_beta_spline_demo
 
 __all__ = [
-    "Contour",
-    "Outline",
+    "beta_coefficients",
+    "beta_spline",
+    "blending_basis",
+    "blending_system",
     "check_number",
-    "classify_joints",
     "cubic_beta_spline",
     "curve_continuity",
-    "font_summary",
-    "glyph_demo",
-    "glyph_outline",
-    "glyph_points_figure",
-    "glyph_summary",
-    "glyphs_figure",
-    "joint_continuity",
+    "gn_beta_spline_basis",
+    "inverse_betas",
     "new_figure",
-    "outlines_figure",
-    "plot_outline",
-    "quadratic_beta_spline",
+    "plot_control_polygon",
+    "plot_curve",
+    "quartic_beta_spline",
+    "quartic_beta_spline_demo",
+    "quartic_conventions_figure",
     "quiz",
-    "svg_outline",
 ]

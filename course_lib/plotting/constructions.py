@@ -21,6 +21,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
+from itertools import pairwise
 
 import numpy as np
 
@@ -140,10 +141,6 @@ def _draw(ax, diagram: Diagram, *, label_offsets: Mapping[str, tuple] | None = N
     ax.margins(0.15)  # room for the labels next to the outermost points (e.g. T)
     ax.autoscale_view()
     return diagram
-
-
-def _fmt(x: float | None, name: str) -> str:
-    return name if x is None else f"{name} = {x:.3g}"
 
 
 # ----------------------------------------------------------------- stitching
@@ -272,7 +269,7 @@ def plot_farin_boehm(
         g = "γ·b" if gamma is None else f"γ·b = {gamma:.3g} b"
     ratios = [
         (f"V{d - 2}", f"V{d - 1}", units[0], _away(V[d - 2], V[d - 1], V[d])),
-        (f"V{d - 1}", "T", bg, -1.0),
+        (f"V{d - 1}", "T", bg, 1.5 * _away(V[d - 1], T, V[d])),  # clear of the leg to V_d
         ("T", "W1", g, 1.0),
         ("W1", "W2", units[1], _away(W[1], W[2], np.delete(W, [1, 2], axis=0).mean(axis=0))),
     ]
@@ -283,7 +280,10 @@ def plot_farin_boehm(
         diagram.artists["curve"] = plot_curve(
             ax, PiecewiseBezier([V, W]), polygon=False, points=False
         )
-    return _draw(ax, diagram, label_offsets={f"V{d}": (-10, -12), "T": (8, 4)})
+    offsets = _away_from_lines(pts, lines, lab)  # each label off every line through its point
+    # V_{d-1} up and left: the ratio label of the short segment V_{d-1} T sits to its right
+    offsets.update({f"V{d - 1}": (-8, 6), f"V{d}": (-10, -12), "T": (8, 4)})
+    return _draw(ax, diagram, label_offsets=offsets)
 
 
 def _info_get(info: Mapping, *names: str):
@@ -426,6 +426,23 @@ def _away(P: np.ndarray, Q: np.ndarray, R: np.ndarray) -> float:
     curve is: inside its control polygon)."""
     d, r = Q - P, R - P
     return -1.0 if d[0] * r[1] - d[1] * r[0] > 0 else 1.0
+
+
+def _away_from_lines(pts: Mapping, lines: Mapping, names, dist: float = 9.0) -> dict:
+    """Label offsets (points) for ``names``: away from the mean of each point's neighbours on
+    the diagram's lines, so that a label sits beside its point, not on a line through it."""
+    near: dict = {}
+    for chain, _style in lines.values():
+        for a, b in pairwise(chain):
+            near.setdefault(a, []).append(pts[b])
+            near.setdefault(b, []).append(pts[a])
+    out = {}
+    for name in names:
+        d = pts[name] - np.mean(near.get(name, [pts[name]]), axis=0)
+        n = np.linalg.norm(d)
+        d = d / n if n > 0 else np.array([0.7, 0.7])
+        out[name] = (float(dist * d[0]), float(dist * d[1]))
+    return out
 
 
 def _outward_offsets(V: np.ndarray, dist: float = 9.0) -> dict:

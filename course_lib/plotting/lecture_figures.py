@@ -61,7 +61,7 @@ def _bezier(points):
 
 # ------------------------------------------------------------------------ lecture 05
 def bezier_figure(V):
-    """Lecture 05, ``nb05-005`` (Barsky & DeRose 1988, Fig. 4): a cubic and its polygon."""
+    """Lecture 07, ``nb07-005`` (Barsky & DeRose 1988, Fig. 4): a cubic and its polygon."""
     fig, ax = new_figure(figsize=(6.5, 4.4))
     plot_curve(ax, _bezier(V), points=False)
     plot_control_polygon(ax, V, labels="$V_{i}$", linestyle="none")
@@ -72,7 +72,7 @@ def bezier_figure(V):
 
 
 def degree_raising_figure(V, W):
-    """Lecture 05, ``nb05-013`` (Fig. 5): the cubic polygon ``V`` (grey), the quartic ``W``."""
+    """Lecture 07, ``nb07-013`` (Fig. 5): the cubic polygon ``V`` (grey), the quartic ``W``."""
     fig, ax = new_figure(figsize=(6.5, 4.4))
     plot_curve(ax, _bezier(W), points=False)
     plot_control_polygon(ax, V, labels=["", "$V_1$", "$V_2$", ""], color=ROLE_COLORS["polygon"])
@@ -84,7 +84,7 @@ def degree_raising_figure(V, W):
 
 
 def g1_stitching_figure(q_poly, stitched, beta1: float):
-    """Lecture 05, ``nb05-019`` (Figs. 6 and 7): the situation, then the G1 construction."""
+    """Lecture 07, ``nb07-019`` (Figs. 6 and 7): the situation, then the G1 construction."""
     fig, (a1, a2) = new_figure(2, 1, figsize=(8.8, 5.6))
     plot_curve(a1, stitched, points=False)
     plot_control_polygon(a1, q_poly, labels="$V_{i}$", linestyle="none")
@@ -99,15 +99,17 @@ def g1_stitching_figure(q_poly, stitched, beta1: float):
 
 
 def farin_boehm_figure(q_poly, stitched, fb, beta1: float):
-    """Lecture 05, ``nb05-028`` (Fig. 8): the Farin–Boehm construction with its lengths."""
+    """Lecture 07, ``nb07-028`` (Fig. 8): the Farin–Boehm construction with its lengths."""
     fig, ax = new_figure(figsize=(8.6, 4.4))
     plot_farin_boehm(ax, q_poly, stitched.segments[1], fb.T, beta1, fb.gamma, lengths=True)
+    ax.set_aspect("equal", adjustable="box")
+    ax.set(xlim=(-0.7, 9.8), ylim=(-1.6, 3.2))  # room for the labels of V_0, W_3 and the title
     ax.set_title("Farin–Boehm: G2 stitching, β₁ = 1, β₂ = 1")
     return fig
 
 
 def catmull_rom_figure(P, curves: Mapping[float, object]):
-    """Lecture 05, ``nb05-044`` (Fig. 9): one panel per β1, and all of them overlaid."""
+    """Lecture 07, ``nb07-044`` (Fig. 9): one panel per β1, and all of them overlaid."""
     colors = ("black", OKABE_ITO["bluish_green"], OKABE_ITO["reddish_purple"])
     fig, axs = new_figure(2, 2, figsize=(8.8, 4.6))
     for ax, (beta, cr), color in zip(axs.flat, curves.items(), colors, strict=False):
@@ -130,7 +132,7 @@ def catmull_rom_figure(P, curves: Mapping[float, object]):
 
 
 def quadratic_beta_spline_figure(quad, P, betas):
-    """Lecture 06, ``nb06-048`` (Fig. 10): the quadratic G1 Beta-spline's construction;
+    """Lecture 08, ``nb08-048`` (Fig. 10): the quadratic G1 Beta-spline's construction;
     ``betas`` are the β1 of its joints (for the title)."""
     fig, ax = new_figure(figsize=(8.8, 3.8))
     plot_beta_spline_construction(ax, quad, P)
@@ -141,7 +143,7 @@ def quadratic_beta_spline_figure(quad, P, betas):
 
 
 def cubic_beta_spline_figure(cubic, P):
-    """Lecture 06, ``nb06-062`` (Fig. 11 a, b): interior vertices, then junctions and curve."""
+    """Lecture 08, ``nb08-062`` (Fig. 11 a, b): interior vertices, then junctions and curve."""
     fig, (a1, a2) = new_figure(2, 1, figsize=(8.8, 6.4))
     plot_beta_spline_construction(a1, cubic, P, show="interior")
     plot_beta_spline_construction(a2, cubic, P)
@@ -155,7 +157,7 @@ def cubic_beta_spline_figure(cubic, P):
 
 
 def curvature_profiles_figure(curves: Mapping[str, object]):
-    """Lecture 06, ``nb06-062b``: κ against arc length, one panel per ``title: curve``."""
+    """Lecture 08, ``nb08-062b``: κ against arc length, one panel per ``title: curve``."""
     fig, axes = new_figure(1, len(curves), figsize=(8.8, 3.2))
     for ax, (title, curve) in zip(np.atleast_1d(axes), curves.items(), strict=True):
         plot_curvature_profile(ax, curve)
@@ -222,7 +224,7 @@ def example1_figure(ex1, dq, dr, typo=None):
 
 
 def reparametrization_figure(Q, f, v0: float):
-    """Lecture 01, ``nb01-039`` (Barsky & DeRose 1988, Fig. 3): ``Q`` and ``Q∘f``."""
+    """Lecture 02, ``nb02-039`` (Barsky & DeRose 1988, Fig. 3): ``Q`` and ``Q∘f``."""
     from .reparametrization_figure import plot_reparametrization
 
     fig, axes = new_figure(1, 2, figsize=(8.8, 4.2))
@@ -231,7 +233,7 @@ def reparametrization_figure(Q, f, v0: float):
 
 
 def models_figure(Q, curves, p, titles):
-    """Lecture 01, ``nb01-047`` (DeRose & Barsky 1985, Fig. 2): one panel per curve, the
+    """Lecture 02, ``nb02-047`` (DeRose & Barsky 1985, Fig. 2): one panel per curve, the
     image of ``Q`` in grey and the curve's velocities at the parameters ``p``."""
     fig, axes = new_figure(1, len(curves), figsize=(8.8, 3.0))
     for ax, c, title in zip(axes, curves, titles, strict=True):
@@ -244,7 +246,7 @@ def models_figure(Q, curves, p, titles):
 
 # ------------------------------------------------------------------------ lecture 02
 def names_figure(qr):
-    """Lecture 02, ``nb02-018b`` (DeRose & Barsky 1985, Fig. 4): the 1985 paper's names,
+    """Lecture 03, ``nb03-018b`` (DeRose & Barsky 1985, Fig. 4): the 1985 paper's names,
     r arriving at J and q leaving it."""
     fig, ax = new_figure(figsize=(8.6, 3.6))
     plot_curve(ax, qr, polygon=False, points=False)
@@ -257,7 +259,7 @@ def names_figure(qr):
 
 
 def combs_figure(curves: Mapping[str, object]):
-    """Lecture 02, ``nb02-044``: per ``name: curve`` a row with the curve and its curvature
+    """Lecture 04, ``nb04-044``: per ``name: curve`` a row with the curve and its curvature
     comb (80 teeth), and its curvature against arc length."""
     fig, axes = new_figure(len(curves), 2, figsize=(8.8, 3.1 * len(curves)))
     for row, (name, curve) in zip(np.atleast_2d(axes), curves.items(), strict=True):
@@ -271,7 +273,7 @@ def combs_figure(curves: Mapping[str, object]):
 
 # ------------------------------------------------------------------------ lecture 03
 def frame_figure(curve, t_left: float = 0.2, t_right: float = 0.8):
-    """Lecture 03, ``nb03-018`` (Finn, Figs. 1 and 2): left, the frame T, N, dT/ds and the
+    """Lecture 05, ``nb05-018`` (Finn, Figs. 1 and 2): left, the frame T, N, dT/ds and the
     osculating circle at ``t_left``; right, the frame at both parameters."""
     fig, (a1, a2) = new_figure(1, 2, figsize=(8.8, 3.8))
     for ax in (a1, a2):
@@ -286,7 +288,7 @@ def frame_figure(curve, t_left: float = 0.2, t_right: float = 0.8):
 
 
 def rebuilt_figure(curve, rebuilt, moved):
-    """Lecture 03, ``nb03-029``: a curve, its samples rebuilt from κ(s), and the same κ(s)
+    """Lecture 05, ``nb05-029``: a curve, its samples rebuilt from κ(s), and the same κ(s)
     started elsewhere in another direction."""
     fig, ax = new_figure(figsize=(7, 4.5))
     plot_curve(ax, curve, polygon=False, points=False, joints=False, label="original")
@@ -298,7 +300,7 @@ def rebuilt_figure(curve, rebuilt, moved):
 
 
 def closeness_figure(circle, others, t):
-    """Lecture 03, ``nb03-038`` (Finn, Fig. 3): top, each curve of ``others`` (a list of
+    """Lecture 05, ``nb05-038`` (Finn, Fig. 3): top, each curve of ``others`` (a list of
     ``(curve or samples, label, title)``) over the circle (grey); bottom, their signed
     curvature against arc length over the circle's κ = 1.  A curve given as samples of
     :func:`~course_lib.differential_geometry.curve_from_curvature` (``s``, ``points``,
@@ -341,7 +343,7 @@ def closeness_figure(circle, others, t):
 
 
 def g1_joint_figure(curve, p):
-    """Lecture 04, ``nb04-040`` (Finn, Fig. 4): two cubics joined G1 and their points p_i."""
+    """Lecture 06, ``nb06-040`` (Finn, Fig. 4): two cubics joined G1 and their points p_i."""
     fig, ax = new_figure(figsize=(8, 3.8))
     plot_curve(ax, curve)
     plot_control_polygon(ax, p, labels="$p_{i}$", linestyle="none")
@@ -350,7 +352,7 @@ def g1_joint_figure(curve, p):
 
 
 def splines_figure(splines: Mapping[str, object], *, control_points=False, reference=None):
-    """Lecture 04, ``nb04-048``, ``nb04-050``, ``nb04-061``: one panel per ``title: spline``;
+    """Lecture 06, ``nb06-048``, ``nb06-050``, ``nb06-061``: one panel per ``title: spline``;
     with ``control_points`` the Bézier points and joints too; a ``reference`` spline is drawn
     under each panel in grey, so that the joints' shifts stand out."""
     fig, axs = new_figure(1, len(splines), figsize=(8.8, 2.9 if len(splines) < 3 else 2.7))
@@ -375,7 +377,7 @@ def splines_figure(splines: Mapping[str, object], *, control_points=False, refer
 
 
 def knot_joint_figure(spline, joint: int, title: str):
-    """Lecture 04, ``nb04-057`` (Finn, Fig. 7): a copy of the knot interval beside a leg."""
+    """Lecture 06, ``nb06-057`` (Finn, Fig. 7): a copy of the knot interval beside a leg."""
     from .constructions import plot_knot_joint_construction
 
     fig, ax = new_figure(figsize=(8.6, 4))
@@ -386,7 +388,7 @@ def knot_joint_figure(spline, joint: int, title: str):
 
 # ------------------------------------------------------------------------ lecture 07
 def quartic_conventions_figure(P, rows: Mapping[float, tuple]):
-    """Lecture 07, ``nb07-021`` (DeRose & Barsky 1985, Fig. 5): per ``β2: (course, 1985)``
+    """Lecture 09, ``nb09-021`` (DeRose & Barsky 1985, Fig. 5): per ``β2: (course, 1985)``
     a row of two quartic Beta-splines on the polygon ``P``, the course's reading left and the
     1985 paper's right.  Every panel has the same limits (the polygon's, with a margin), so
     the polygons compare point by point; a curve that leaves the frame is clipped."""
@@ -407,7 +409,7 @@ def quartic_conventions_figure(P, rows: Mapping[float, tuple]):
 
 
 def domain_and_patch_figure(F):
-    """Lecture 08, ``nb08-026`` (DeRose & Barsky 1985, Fig. 6): the domain and the patch."""
+    """Lecture 10, ``nb10-026`` (DeRose & Barsky 1985, Fig. 6): the domain and the patch."""
     from .surface_figures import plot_domain_and_patch
 
     fig, ax = new_figure(figsize=(7, 5.5), projection="3d")
@@ -417,7 +419,7 @@ def domain_and_patch_figure(F):
 
 
 def parameter_lines_figure(F, to_uv):
-    """Lecture 08, ``nb08-033`` (Fig. 8): parameter lines of ``F`` and of ``F∘to_uv``."""
+    """Lecture 10, ``nb10-033`` (Fig. 8): parameter lines of ``F`` and of ``F∘to_uv``."""
     from .surface_figures import plot_parameter_lines
 
     fig, (a1, a2) = new_figure(1, 2, figsize=(8.8, 4.2), projection="3d")
@@ -429,7 +431,7 @@ def parameter_lines_figure(F, to_uv):
 
 
 def patch_pairs_figure(F, pairs: Mapping[str, object]):
-    """Lecture 08, ``nb08-047`` (Fig. 7): per ``title: G`` the pair F, G with the normals of
+    """Lecture 10, ``nb10-047`` (Fig. 7): per ``title: G`` the pair F, G with the normals of
     both along their common boundary, seen from one low angle."""
     from .surfaces3d import plot_patch_pair
 
@@ -444,7 +446,7 @@ def patch_pairs_figure(F, pairs: Mapping[str, object]):
 
 # ------------------------------------------------------------------------ lecture 09
 def glyph_points_figure(outline, implied):
-    """Lecture 09, ``nb09-007``: a glyph's points and segments, its ``implied`` on-curve
+    """Lecture 11, ``nb11-007``: a glyph's points and segments, its ``implied`` on-curve
     points marked."""
     from .outlines import plot_outline
 
@@ -480,7 +482,7 @@ def _kind_legend(fig, kinds):
 
 
 def glyphs_figure(glyphs: Mapping[str, object]):
-    """Lecture 09, ``nb09-014``: each glyph with its curvature comb and joints, two per row."""
+    """Lecture 11, ``nb11-014``: each glyph with its curvature comb and joints, two per row."""
     from .outlines import plot_outline
 
     rows = (len(glyphs) + 1) // 2
@@ -495,7 +497,7 @@ def glyphs_figure(glyphs: Mapping[str, object]):
 
 
 def outlines_figure(outlines, **style):
-    """Lecture 09, ``nb09-022``: outlines side by side with combs, titled by their names."""
+    """Lecture 11, ``nb11-022``: outlines side by side with combs, titled by their names."""
     from .outlines import plot_outline
 
     fig, axes = new_figure(1, len(outlines), figsize=(8.8, 4.2))

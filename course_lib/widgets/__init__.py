@@ -15,6 +15,13 @@ from the lecture with Voilà, the course's ``course-deck`` template and a pre-he
 (``tools/present.py``); there ``$COURSE_CANVAS_PX`` makes every demo canvas 1280 px wide.
 The RISE slide view does not render ipywidgets or ipympl (jupyterlab-contrib/rise #119).
 
+Layout: ``state`` (what a demo is: :class:`CurveDemoState`), ``view`` (how it is drawn:
+:class:`CurveDemoView`, :class:`BlitView`), ``assembly`` (the widgets around them:
+:class:`Demo`, sliders, selectors), ``_controls`` (a curve demo's standard controls),
+``access`` (keyboard and screen readers), ``demos``, ``reparam``, ``outlines`` (the demos).
+No widget module computes: the numbers come from the math modules
+(:func:`course_lib.continuity.joint_report` for the live report).
+
 Demos follow the hand: only moving artists are redrawn (:class:`BlitView`), queued input is
 coalesced (``_coalesce``), a released point lands under the mouse and the release sends a
 full frame; ``cl-check-details`` shows the report's higher orders and residuals.
@@ -22,7 +29,8 @@ full frame; ``cl-check-details`` shows the report's higher orders and residuals.
 
 from __future__ import annotations
 
-from ._core import BlitView, CurveDemoState, CurveDemoView, Demo, SliderSpec, joint_report
+from ..continuity import joint_report  # kept here for callers of the demos' report
+from .assembly import Demo
 from .demos import (
     beta_spline_demo,
     catmull_rom_demo,
@@ -35,6 +43,8 @@ from .demos import (
 from .interactor import PointDragger
 from .outlines import GlyphDemoState, glyph_demo
 from .reparam import ReparametrizationState
+from .state import CurveDemoState, SliderSpec
+from .view import BlitView, CurveDemoView
 
 __all__ = [
     "BlitView",

@@ -33,6 +33,9 @@ from collections.abc import Callable
 
 import numpy as np
 
+from .assembly import selector
+from .view import BlitView, ring_marker
+
 __all__ = [
     "SLIDER_NAMES_JS",
     "PointControls",
@@ -195,14 +198,7 @@ class PointControls:
         pad = 2 * extent
         self.selected = 0
         self.message = ""
-        self.select = w.Dropdown(
-            options=self._options(len(P)),
-            value=0,
-            description="point",
-            style={"description_width": "3em"},
-            layout=w.Layout(width="9em"),
-        )
-        self.select.add_class("cl-point-select")
+        self.select = selector(self._options(len(P)), 0, "point", "9em", "cl-point-select")
         common = dict(
             step=self.fine,
             continuous_update=True,
@@ -255,21 +251,11 @@ class PointControls:
         if view is not None and getattr(view, "ax", None) is not None:
             from ..plotting.style import OKABE_ITO
 
-            (self.ring,) = view.ax.plot(
-                [],
-                [],
-                ls="none",
-                marker="o",
-                ms=17,
-                mfc="none",
-                mec=OKABE_ITO["black"],
-                mew=2.0,
-                zorder=9,
-                label="_selected point",
+            self.ring = ring_marker(
+                view.ax, OKABE_ITO["black"], ms=17, mew=2.0, zorder=9, label="_selected point"
             )
-            if getattr(view, "blit", False):
-                self.ring.set_animated(True)
-                view.dynamic.append(self.ring)
+            if isinstance(view, BlitView):
+                view.add_dynamic(self.ring)
         self.select.observe(demo.guard(self._on_select), names="value")
         self.x.observe(demo.guard(self._on_field), names="value")
         self.y.observe(demo.guard(self._on_field), names="value")
@@ -335,7 +321,7 @@ class PointControls:
         def steps():
             self.x.step = self.y.step = s
 
-        self.demo._sync(steps)
+        self.demo.sync(steps)
 
     def refresh(self, state=None) -> None:
         """Bring the fields, the ring and the live region up to date with the state."""
@@ -347,7 +333,7 @@ class PointControls:
                 self.select.options = self._options(len(P))
                 self.select.value = self.selected
 
-            self.demo._sync(options)
+            self.demo.sync(options)
         x, y = P[self.selected]
 
         def fields():
@@ -356,7 +342,7 @@ class PointControls:
                     f.min, f.max = min(f.min, v), max(f.max, v)
                     f.value = float(v)
 
-        self.demo._sync(fields)
+        self.demo.sync(fields)
         if self.ring is not None:
             self.ring.set_data([x], [y])
             view = self.demo.view

@@ -1,4 +1,4 @@
-"""One-line demos of the course.  Each returns a :class:`~course_lib.widgets._core.Demo`.
+"""One-line demos of the course.  Each returns a :class:`~course_lib.widgets.assembly.Demo`.
 
 In a notebook the demo displays as a figure (ipympl canvas) with sliders, switches, a
 live continuity report and draggable points.  With ``static=True`` -- or automatically
@@ -25,8 +25,10 @@ import numpy as np
 
 from .._validation import as_points
 from ._controls import assemble_curve_demo
-from ._core import CurveDemoState, CurveDemoView, Demo, SliderSpec, _widgets_available
+from .assembly import Demo, resolve_static
 from .reparam import reparametrization_demo
+from .state import CurveDemoState, SliderSpec
+from .view import CurveDemoView
 
 __all__ = [
     "BETA1",
@@ -64,10 +66,6 @@ QUARTIC_BETA2 = replace(BETA2, max=100.0, per_joint=False)
 QUARTIC_BETA3 = SliderSpec("beta3", "β₃", -50.0, 50.0, 0.1, "cl-slider-beta3", per_joint=False)
 
 
-def _static(static: bool | None) -> bool:
-    return (not _widgets_available()) if static is None else bool(static)
-
-
 def _finish(
     state: CurveDemoState,
     *,
@@ -85,7 +83,7 @@ def _finish(
         state.order = min(int(order), state.max_order)
     for spec in sliders:  # an initial value the slider cannot show is an error, not clamped
         spec.check(state.params[spec.name])
-    static = _static(static)
+    static = resolve_static(static)
     view = CurveDemoView(
         state,
         static=static,

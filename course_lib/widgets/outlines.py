@@ -17,7 +17,8 @@ from collections.abc import Callable
 import numpy as np
 
 from ..outlines import KINDS, classify_joints, glyph_outline, truetype_outline
-from ._core import Demo, _widgets_available, make_figure
+from .assembly import Demo, resolve_static
+from .view import make_figure
 
 __all__ = ["DEMO_FONTS", "GlyphDemoState", "GlyphDemoView", "glyph_demo"]
 
@@ -193,7 +194,7 @@ def glyph_demo(char: str = "S", font: str = "DejaVuSans", *, static: bool | None
         ``demo.state`` is the :class:`GlyphDemoState`; ``demo.controls`` has ``"char"``
         (a text box) and ``"font"`` (a dropdown).
     """
-    static = (not _widgets_available()) if static is None else bool(static)
+    static = resolve_static(static)
     state = GlyphDemoState(char, font)
     view = GlyphDemoView(state, static=static)
     demo = Demo(state, view, static=static)

@@ -14,7 +14,10 @@ import html
 import numpy as np
 
 from .._validation import as_points, check_finite_scalar
-from ._core import BlitView, Demo, SliderSpec, _widgets_available, fit_equal_limits, make_figure
+from .assembly import Demo, resolve_static
+from .report import warning_paragraph
+from .state import SliderSpec
+from .view import BlitView, fit_equal_limits, make_figure
 
 __all__ = ["ReparametrizationState", "reparametrization_demo"]
 
@@ -105,7 +108,7 @@ class ReparametrizationState:
 
     def report_html(self) -> str:
         if self.warning:
-            return f"<p style='color:#934100;font-weight:bold'>⚠ {html.escape(self.warning)}</p>"
+            return warning_paragraph(self.warning)
         F = self.facts
 
         def vec(x):
@@ -219,7 +222,7 @@ def reparametrization_demo(
         If ``|a| >= 1`` or the points are bad; if ``a`` or ``v`` lies outside its
         slider's range (``[-0.9, 0.9]``, ``[0, 1]``).
     """
-    static = (not _widgets_available()) if static is None else bool(static)
+    static = resolve_static(static)
     state = ReparametrizationState(points, a, v)  # |a| >= 1 raises here
     A_SLIDER.check(state.a)  # no initial value outside its slider (never clamped)
     V_SLIDER.check(state.v)
@@ -229,11 +232,11 @@ def reparametrization_demo(
     if static:
         return demo
 
-    from ._controls import _slider, observe, snap_to_step
+    from .assembly import observe, slider, snap_to_step
     from .interactor import PointDragger
 
-    sa = _slider(A_SLIDER, state.a)
-    sv = _slider(V_SLIDER, state.v)
+    sa = slider(A_SLIDER, state.a)
+    sv = slider(V_SLIDER, state.v)
     demo.controls.update(a=sa, t=sv)
     observe(demo, sa, lambda ch: state.set_a(snap_to_step(A_SLIDER, ch["new"])))
     observe(demo, sv, lambda ch: state.set_t(snap_to_step(V_SLIDER, ch["new"])))

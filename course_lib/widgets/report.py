@@ -11,7 +11,21 @@ from __future__ import annotations
 
 import html
 
-__all__ = ["DETAIL_NOTE", "NOISE", "demo_report_html"]
+__all__ = ["DETAIL_NOTE", "NOISE", "demo_report_html", "warning_paragraph", "warning_span"]
+
+#: How a warning looks everywhere in a demo (a dark orange that keeps 4.5:1 on white).
+WARNING_STYLE = "color:#934100;font-weight:bold"
+
+
+def warning_paragraph(text: str) -> str:
+    """A warning inside a report's HTML (class ``cl-warning-text``), text escaped."""
+    return f"<p class='cl-warning-text' style='{WARNING_STYLE}'>⚠ {html.escape(text)}</p>"
+
+
+def warning_span(text: str) -> str:
+    """A warning in a demo's warning widget (class ``cl-warning``), text escaped."""
+    return f"<span style='{WARNING_STYLE}'>⚠ {html.escape(text)}</span>"
+
 
 #: The one-line explanation shown above the details.
 DETAIL_NOTE = (

@@ -45,10 +45,9 @@ ARTIFACTS = ROOT / "test-artifacts"
 #: slow, not wrong; how long they take is measured (test_demo_latency.py), never asserted.
 WAIT_S = float(os.environ.get("COURSE_BROWSER_WAIT_S", "300"))
 WAIT_MS = int(WAIT_S * 1000)
-sys.path.insert(0, str(ROOT / "tools"))
 # one rule for finding the browser, shared with the handouts (tools/chromium.py)
-from chromium import CHROMIUM_ENV as CHROMIUM_ENV  # noqa: E402
-from chromium import find_chromium as find_chromium  # noqa: E402
+from tools.chromium import CHROMIUM_ENV as CHROMIUM_ENV  # noqa: E402
+from tools.chromium import find_chromium as find_chromium  # noqa: E402
 
 # ----------------------------------------------------------------------------- the kernel behind a page
 EXECUTE_JS = """async (code) => {

@@ -97,7 +97,7 @@ def own_violations(violations: list[dict]) -> list[str]:
 def small_site(tmp_path_factory) -> Path:
     pytest.importorskip("sphinx")
     pytest.importorskip("myst_nb")
-    import build_site  # tools/ (on the path through browser_harness)
+    from tools import build_site
 
     out = tmp_path_factory.mktemp("a11y-site") / "html"
     build_site.build([LECTURE, HOMEWORK], out, 2, True)
@@ -146,7 +146,7 @@ def test_every_image_has_a_sentence_for_alt(small_site):
 
 
 def test_site_pages_have_no_wcag_violations_of_our_own(small_site, chromium_browser):
-    import build_handouts  # tools/ (on the path through browser_harness)
+    from tools import build_handouts
 
     axe = _axe_path()
     OUT.mkdir(parents=True, exist_ok=True)

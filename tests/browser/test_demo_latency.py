@@ -1,7 +1,7 @@
 """Benchmark: how long from the hand to the picture, for every lecture demo, in a real browser.
 
 A private JupyterLab opens ``fixtures/all_demos.ipynb`` (each lecture demo as the lectures
-call it, and lecture 08's rotatable 3D patch pair) in headless Chromium and runs it.  For
+call it, and lecture 10's rotatable 3D patch pair) in headless Chromium and runs it.  For
 each demo the test then
 
 * presses an arrow key on its first slider ``N`` times (alternating right/left),
@@ -264,7 +264,7 @@ def test_input_to_canvas_latency(bench_page, artifacts):
                       "slider samples": [round(x, 1) for x in slider],
                       "drag samples": [round(x, 1) for x in drag]}
 
-    # -- the 3D patch pair of lecture 08: turn the left panel
+    # -- the 3D patch pair of lecture 10: turn the left panel
     sel = ".cl-bench-patches"
     fig = page.locator(sel).first
     fig.scroll_into_view_if_needed()

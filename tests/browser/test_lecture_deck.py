@@ -32,10 +32,9 @@ pytestmark = [pytest.mark.browser, pytest.mark.slow]
 
 
 def _present():
-    spec = importlib.util.spec_from_file_location("present", ROOT / "tools" / "present.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
+    from tools import present
+
+    return present
 
 
 # prose metrics: font size, and characters per line estimated from each paragraph's height

@@ -483,9 +483,9 @@ def test_lecture_numeric_checks_pass_right_and_fail_wrong_answers():
     """The mechanism; every lecture answer is derived in tests/test_lecture_answers.py."""
     from course_lib.checks.lectures import check_number
 
-    right = np.hypot(4, 2)  # lecture01.q3 by hand: q~'(v) = 2 q'(2v) = (4, 2)
-    assert check_number("lecture01.q3", right).passed
-    assert not check_number("lecture01.q3", right + 0.5).passed
-    assert check_number("lecture01.q3", ...).status == "not answered"
-    assert not check_number("lecture09.q9", 1.0).passed
-    assert "10" not in check_number("lecture08.q1", 3).message
+    right = np.hypot(4, 2)  # lecture02.q3 by hand: q~'(v) = 2 q'(2v) = (4, 2)
+    assert check_number("lecture02.q3", right).passed
+    assert not check_number("lecture02.q3", right + 0.5).passed
+    assert check_number("lecture02.q3", ...).status == "not answered"
+    assert not check_number("lecture11.q9", 1.0).passed
+    assert "10" not in check_number("lecture10.q1", 3).message

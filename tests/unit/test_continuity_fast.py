@@ -3,7 +3,6 @@ table against sympy, and the benchmark item 7 harness on tiny sizes."""
 
 from __future__ import annotations
 
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -86,13 +85,11 @@ def test_generic_path_still_works_for_parametric_curves():
     assert rep.betas[0] == pytest.approx(2.0)
 
 
-def test_benchmark_item_7_runs_and_checks_first():
-    sys.path.insert(0, str(BENCH))
-    try:
-        import bench_common
-        import bench_continuity
-    finally:
-        sys.path.remove(str(BENCH))
+def test_benchmark_item_7_runs_and_checks_first(monkeypatch):
+    monkeypatch.syspath_prepend(str(BENCH))  # benchmarks/ is a folder of scripts, not a package
+    import bench_common
+    import bench_continuity
+
     rows = bench_continuity.run(bench_common.TINY)
     assert len(rows) == 2 and all(r.item == "7" and r.ours > 0 and r.reference > 0 for r in rows)
     V = np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 1.0], [3.0, 0.0]])
@@ -124,12 +121,10 @@ def test_characterizations_agree_near_the_threshold(beta1, which):
     assert seen_far >= 10
 
 
-def test_benchmark_item_8_runs_and_checks_first():
-    sys.path.insert(0, str(BENCH))
-    try:
-        import bench_common
-        import bench_large_curve
-    finally:
-        sys.path.remove(str(BENCH))
+def test_benchmark_item_8_runs_and_checks_first(monkeypatch):
+    monkeypatch.syspath_prepend(str(BENCH))  # benchmarks/ is a folder of scripts, not a package
+    import bench_common
+    import bench_large_curve
+
     rows = bench_large_curve.run(bench_common.TINY)
     assert len(rows) == 2 and all(r.item == "8" and r.ours > 0 and r.reference > 0 for r in rows)

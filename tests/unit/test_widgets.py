@@ -358,11 +358,10 @@ def test_demos_run_in_a_kernel():
 
 
 def test_automatic_static_fallback_without_widgets(monkeypatch):
-    import course_lib.widgets._core as core
+    import course_lib.widgets.assembly as assembly
     import course_lib.widgets.demos as demos
 
-    monkeypatch.setattr(core, "_widgets_available", lambda: False)
-    monkeypatch.setattr(demos, "_widgets_available", lambda: False)
+    monkeypatch.setattr(assembly, "widgets_available", lambda: False)
     demo = demos.beta_spline_demo()
     assert demo.widget is None and type(demo.figure.canvas).__name__ == "FigureCanvasAgg"
     assert "image/png" in demo._repr_mimebundle_()
@@ -668,7 +667,7 @@ def test_release_outside_the_axes_keeps_the_point_at_the_edge():
 
 
 def test_sliders_lose_the_float_error_of_their_grid():
-    from course_lib.widgets._controls import readout_format, snap_to_step
+    from course_lib.widgets.assembly import readout_format, snap_to_step
     from course_lib.widgets.demos import BETA1, BETA2_STITCH
 
     demo = g2_stitch_demo(beta1=1.0, beta2=1.0)

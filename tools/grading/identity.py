@@ -45,8 +45,9 @@ FILE_TIME_AFTER = "file time after deadline"  # Canvas says on time: Canvas deci
 WRONG_CODE = "wrong variant code"
 NO_CODE = "no variant code"
 SHARED_CODE = "shared variant code"
+TAMPERING = "reaches into the grader"  # the notebook's code (tools/grading/tamper.py)
 FLAGS = (NOT_IN_ROSTER, EDITED, ID_DIFFERS, TIMES_DISAGREE, LATE, SEVERAL, WRONG_CODE,
-         SHARED_CODE, NO_CODE, FILE_TIME_AFTER)  # fmt: skip
+         SHARED_CODE, NO_CODE, FILE_TIME_AFTER, TAMPERING)  # fmt: skip
 
 #: a manifest time more than this after the file's own time cannot be true
 CLOCK_SLACK_SECONDS = 600

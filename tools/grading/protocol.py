@@ -32,7 +32,6 @@ from __future__ import annotations
 import builtins
 import json
 import math
-import re
 from collections.abc import Callable
 from typing import Any
 
@@ -74,14 +73,6 @@ _KNOWN_EXCEPTIONS = frozenset(
     for name, value in vars(builtins).items()
     if isinstance(value, type) and issubclass(value, BaseException)
 ) | {"LinAlgError", "ExerciseError", "SympifyError", "PolificationFailed"}
-_OWN_WORK = re.compile(
-    r"(?:ExerciseError: )?(?P<impl>course_lib(?:\.[A-Za-z_]\w*)+) is the exercise of "
-    r"(?P<q>hw\d\d\.q\d+): write it yourself"
-)
-_SWITCHED_OFF = re.compile(
-    r"(?:ExerciseError: )?the guard of (?P<q>hw\d\d\.q\d+) was switched off in this kernel "
-    r"\((?P<impl>course_lib(?:\.[A-Za-z_]\w*)+)\): write it yourself"
-)
 _RECURSION = "RecursionError: the code recursed without end"
 
 
@@ -90,25 +81,38 @@ def raised_note(message: str) -> str:
 
     The message of an exception is the student's text -- a function can raise
     ``ValueError(f"{inputs}")`` and read the hidden cases' inputs in its feedback -- so it is
-    dropped.  Kept are the course's own sentences whose every part the grader verifies: the
-    own-work sentence for an implementation that really is that question's exercise
-    (:mod:`course_lib.own_work`), and the probe's note on endless recursion.
+    dropped.  Kept is the probe's note on endless recursion.  The own-work sentence never comes
+    this way: it is the response kind ``exercise`` (:func:`exercise_note`).
     """
-    from course_lib import own_work  # the registry the sentence must name
-
     text = str(message).strip()
     if text == _RECURSION:
         return text
-    for pattern in (_OWN_WORK, _SWITCHED_OFF):
-        m = pattern.fullmatch(text.rstrip("."))
-        if m:
-            exercise = own_work.EXERCISES.get(m["q"]) or own_work.VALUE_EXERCISES.get(m["q"])
-            if exercise is not None and m["impl"] in exercise.implementations:
-                return text.removeprefix("ExerciseError: ")
     name = text.split(":", 1)[0].strip()
     if name in _KNOWN_EXCEPTIONS:
         return f"{name} (the message is not shown: run your function on your own data to see it)"
     return "an exception (run your function on your own data to see it)"
+
+
+def exercise_note(response: dict) -> str:
+    """The note for a response of kind ``exercise`` (:class:`course_lib.own_work.ExerciseError`).
+
+    The sentence is written here, by :mod:`course_lib.own_work`, from the response's
+    ``question`` and ``implementation`` -- only when that implementation really is that
+    question's exercise in the registry; the response's text is never shown.
+    """
+    from course_lib import own_work  # the registry the fields must name
+
+    question, implementation = response.get("question"), response.get("implementation")
+    if isinstance(question, str) and isinstance(implementation, str):
+        # a value implementation names every question of its homework it computes ("hw03.q1,
+        # hw03.q3 and hw03.q5"): each must list it
+        named = question.replace(" and ", ", ").split(", ")
+        rows = [own_work.EXERCISES.get(q) or own_work.VALUE_EXERCISES.get(q) for q in named]
+        if all(row is not None and implementation in row.implementations for row in rows):
+            if response.get("switched_off") is True:
+                return own_work.switched_off_message(implementation, question)
+            return own_work.exercise_message(implementation, question)
+    return raised_note("ExerciseError")
 
 
 class StudentRaised(AssertionError):
@@ -117,6 +121,14 @@ class StudentRaised(AssertionError):
     An ``AssertionError`` so that a hidden test scoring case by case
     (``course_lib.answers.partial_credit``) charges it to that case only.
     """
+
+    def __init__(self, note: str = "", *, exercise: bool = False) -> None:
+        if note:
+            super().__init__(note)
+        else:
+            super().__init__()
+        #: a library implementation of the exercise raised (own_work.ExerciseError)
+        self.exercise = exercise
 
     def __str__(self) -> str:
         return f"your code raised {self.args[0] if self.args else 'an exception'}"
@@ -188,6 +200,8 @@ def parse_response(text: str | bytes | None) -> Any:
         raise NotAnswered("the function still raises NotImplementedError")
     if kind == "raised":
         raise StudentRaised(raised_note(message))
+    if kind == "exercise":
+        raise StudentRaised(exercise_note(response), exercise=True)
     if kind == "unsupported":
         raise BadAnswer(message)
     raise ChannelBroken("the result could not be read")

@@ -450,6 +450,7 @@ def variant_spread(results, tests, labels: dict[str, dict[str, str]]) -> dict[st
 #: the flags of the status column, in the order an instructor acts on them (identity.py)
 ACT_ON = (
     ("not in the roster", "Not in the roster (not in the import file; resolve by hand, then `--only`)"),
+    ("reaches into the grader", "Code that reaches into the grader's guards (review the notebook; why follows each name)"),
     ("edited after submit", "Edited after submit() (checksum mismatch)"),
     ("manifest id differs", "The submit() manifest names another roster student"),
     ("manifest time disagrees", "The submit() manifest's time disagrees with the LMS/file time"),
@@ -464,6 +465,12 @@ ACT_ON = (
 
 def flags_of(r) -> list[str]:
     return [p.strip() for p in r.status.split(";")[1:]]
+
+
+def _why(r, flag: str) -> str:
+    """The scan's reasons after a name flagged for its code (tools/grading/tamper.py)."""
+    review = getattr(r, "review", None) if flag == "reaches into the grader" else None
+    return f" ({'; '.join(review)})" if review else ""
 
 
 def _named(e: RosterEntry) -> str:
@@ -513,7 +520,7 @@ def summary(
     lines = [f"# {tests.homework}: class summary", "", "## Act on these first", ""]
     flagged: dict[str, list[str]] = {}
     for flag, title in ACT_ON:
-        who = sorted(_who(r) for r in listed if flag in flags_of(r))
+        who = sorted(_who(r) + _why(r, flag) for r in listed if flag in flags_of(r))
         flagged[flag] = who
         if who:
             lines.append(f"- **{title}** ({len(who)}): " + ", ".join(who))

@@ -26,9 +26,10 @@ from pathlib import Path
 
 import nbformat
 
+from course_lib import own_work
 from course_lib.submit import describe_cell, error_text, manifest_of
 
-from . import jobroot, protocol, sandbox
+from . import jobroot, protocol, sandbox, tamper
 
 DEFAULT_CELL_TIMEOUT = 60.0
 DEFAULT_TIME_LIMIT = 300.0
@@ -117,6 +118,8 @@ class Result:
     fractions: dict[str, float] = field(default_factory=dict)
     #: why intake refused to open the student's file ("a link, not graded"), "" if it was opened
     refused: str = ""
+    #: why the notebook's code was flagged for the instructor (tools/grading/tamper.py)
+    review: list[str] = field(default_factory=list)
 
     def right(self, q: str, points: float) -> bool:
         """Did the answer to ``q`` earn full credit (also for a feedback-only question)?"""
@@ -319,12 +322,23 @@ def _kill_kernel(client) -> None:
 class _Kernel:
     """One sandboxed kernel of one submission."""
 
-    def __init__(self, job: Path, opts: Options, deadline: float) -> None:
+    def __init__(
+        self,
+        job: Path,
+        opts: Options,
+        deadline: float,
+        hits: set[str] | None = None,
+        job_tmpfs: bool = False,
+    ) -> None:
         self.job = job
         self.opts = opts
         self.deadline = deadline
         self.client = None
         self.cgroup = None
+        #: the limits this submission's sandboxes met (sandbox.SandboxGroups.limits_reached,
+        #: sandbox.full_tmpfs), collected over its kernels; None: not counted (the preflight)
+        self.hits = hits
+        self.job_tmpfs = job_tmpfs
 
     def remaining(self) -> float:
         return self.deadline - time.monotonic()
@@ -332,7 +346,7 @@ class _Kernel:
     def start(self) -> None:
         from nbclient.exceptions import DeadKernelError
 
-        self.cgroup = sandbox.SandboxGroups(self.opts.limits)
+        self.cgroup = sandbox.SandboxGroups(self.opts.limits, job_tmpfs=self.job_tmpfs)
         client = _client_class()(
             nbformat.v4.new_notebook(),
             timeout=None,
@@ -395,11 +409,36 @@ class _Kernel:
             raise _CellFailed(f"the kernel died ({type(exc).__name__})") from None
         finally:
             client.nb.cells[index] = nbformat.v4.new_code_cell("")  # keep no outputs around
+            self._count_limits()
         if client.flooded:
             raise _CellFailed(f"{client.flooded}; the kernel was stopped")
         return cell.get("outputs", [])
 
+    def _sandbox_pids(self) -> list[int]:
+        if self.cgroup is not None and self.cgroup.paths:
+            return self.cgroup.pids()
+        process = getattr(getattr(getattr(self.client, "km", None), "provisioner", None),
+                          "process", None)  # fmt: skip
+        return sandbox.descendants(process.pid) if process is not None else []
+
+    def _count_limits(self) -> None:
+        """After each cell (the files may be gone, the process dead, by the end): a full /tmp
+        or /dev/shm, and an address space that came near ``--memory`` (a refused allocation,
+        caught or not, is counted nowhere by the kernel)."""
+        if self.hits is None:
+            return
+        pids = self._sandbox_pids()
+        if self.opts.mode == "bwrap":
+            self.hits |= sandbox.full_tmpfs(pids)
+        if self.job_tmpfs and _job_full(self.job):
+            self.hits.add("disk")
+        limit = self.opts.limits.memory_bytes
+        if sandbox.peak_address_space(pids) >= sandbox.NEAR_MEMORY_LIMIT * limit:
+            self.hits.add("memory")
+
     def stop(self) -> None:
+        if self.hits is not None and self.cgroup is not None:
+            self.hits |= self.cgroup.limits_reached()  # before the groups are removed
         client, self.client = self.client, None
         if client is not None:
             _kill_kernel(client)
@@ -431,6 +470,8 @@ class _Session:
         self.attempts = 0
         self.responses = job  # where the probe writes its answers (grade_notebook sets it)
         self.mounted = False  # is the job folder a size-limited tmpfs (else checked per cell)
+        self.hits: set[str] = set()  # limits met by its sandboxes (counted by the sandbox)
+        self.homework = ""  # written to the grader's state file (own_work) with each request
 
     def ensure(self) -> _Kernel | None:
         """A kernel that has run every (non-skipped) student cell, or None."""
@@ -440,7 +481,7 @@ class _Session:
                 self.result.run_notes.append(self.broken)
                 break
             self.attempts += 1
-            kernel = _Kernel(self.job, self.opts, self.deadline)
+            kernel = _Kernel(self.job, self.opts, self.deadline, self.hits, self.mounted)
             k = -1
             try:
                 kernel.start()
@@ -509,7 +550,11 @@ class _Session:
                     f"the test did not finish within {self.opts.question_timeout:g} s "
                     "(an endless loop in your code?)"
                 )
+            guarded = own_work.questions_of(request.get("name")) if request.get("op") == "call" else ()
+            state = sandbox.grader_state_path(self.job)
             try:
+                if guarded:  # every process of the sandbox reads it (own_work.require)
+                    state.write_text(own_work.grader_state_text(self.homework, guarded))
                 kernel.run(source, left)
             except _WallLimit:
                 self.kernel = None
@@ -528,6 +573,9 @@ class _Session:
                 else:
                     why = f"the test was stopped: {exc.why}"
                 raise protocol.ChannelBroken(why) from None
+            finally:
+                if guarded:
+                    state.write_text(own_work.grader_state_text(self.homework))
             return _read_limited(response, protocol.MAX_RESPONSE_BYTES + 1)
 
         return send
@@ -620,12 +668,21 @@ def _error_text(outputs) -> str | None:
     return None
 
 
-def _note_disk(job: Path, mounted: bool, limit: int, result: Result) -> None:
-    """Say so when the submission filled its job folder (its own writes failed, nobody else's)."""
+def _job_full(job: Path) -> bool:
+    """Is a tmpfs job folder full (less than 1 MB left)?"""
+    try:
+        sv = os.statvfs(job)
+    except OSError:
+        return False
+    return sv.f_bavail * sv.f_frsize < (1 << 20)
+
+
+def _note_disk(job: Path, mounted: bool, limit: int, result: Result, hits: set[str]) -> None:
+    """Say so when the submission filled its job folder (its own writes failed, nobody else's):
+    full now, or full after one of its cells (``hits``: the files may have been removed)."""
     try:
         if mounted:
-            sv = os.statvfs(job)
-            full = sv.f_bavail * sv.f_frsize < (1 << 20)
+            full = "disk" in hits or _job_full(job)
         else:
             full = jobroot.used_bytes(job, stop_at=limit) > limit
     except OSError:
@@ -635,6 +692,40 @@ def _note_disk(job: Path, mounted: bool, limit: int, result: Result) -> None:
             f"the job folder reached the disk limit of {limit >> 20} MB "
             "(writes past it failed with 'No space left on device')"
         )
+        result.status = f"{result.status}; reached the disk limit ({limit >> 20} MB)"
+
+
+def limit_flags(hits: set[str], limits: sandbox.Limits) -> list[tuple[str, str]]:
+    """``(status flag, feedback sentence)`` for every limit a submission's sandbox met."""
+    mb = 1 << 20
+    said = {
+        "processes": (
+            f"reached the process limit ({limits.processes})",
+            "starting more processes or threads failed in its code",
+        ),
+        "memory": (
+            f"reached the memory limit ({limits.memory_bytes // mb} MB)",
+            "allocations past it fail (MemoryError); files in /tmp and /dev/shm count as memory",
+        ),
+        "/tmp": (
+            f"reached the /tmp limit ({limits.tmp_bytes // mb} MB)",
+            "writes past it failed with 'No space left on device'",
+        ),
+        "/dev/shm": (
+            f"reached the /dev/shm limit ({limits.tmp_bytes // mb} MB)",
+            "writes past it failed with 'No space left on device'",
+        ),
+    }
+    return [(said[h][0], f"the sandbox {said[h][0]}: {said[h][1]}")
+            for h in ("processes", "memory", "/tmp", "/dev/shm") if h in hits]  # fmt: skip
+
+
+def _note_limits(hits: set[str], limits: sandbox.Limits, result: Result) -> None:
+    """One sentence and one status flag per limit the sandbox's own counters saw met, also
+    when the student's code caught the error (a refused fork, a full /tmp)."""
+    for flag, sentence in limit_flags(hits, limits):
+        result.run_notes.append(sentence)
+        result.status = f"{result.status}; {flag}"
 
 
 def _note_variant_mismatch(session, timeout: float, variant: str, result: Result) -> None:
@@ -652,6 +743,35 @@ def _note_variant_mismatch(session, timeout: float, variant: str, result: Result
         result.run_notes.append(
             f"your notebook used {shown}, but your variant code is {mine}: you were graded on "
             "your own data, so answers computed for other data are wrong"
+        )
+
+
+def _note_manifest(nb, homework: str, result: Result) -> None:
+    """What the submit() manifest says (student, time), and whether it still holds."""
+    manifest = manifest_of(nb)
+    if manifest is None:
+        return
+    result.manifest_student = manifest["student"]
+    result.submitted = manifest["time"].isoformat()
+    result.time_source = "manifest"
+    if manifest["tampered"]:
+        result.run_notes.append("the notebook was changed after submit() (checksum mismatch)")
+    if manifest["homework"] != homework:
+        result.run_notes.append(f"submitted as {manifest['homework']!r}, graded as {homework!r}")
+
+
+def _note_cell_errors(
+    errors: dict, positions: list, cells: list, lim: sandbox.Limits, result: Result
+) -> None:
+    """The cells that raised (at most 12 notes in all), and what a full disk means."""
+    for k in sorted(errors):
+        if len(result.run_notes) < 12:
+            where = describe_cell(k + 1, positions[k], cells[k])
+            result.run_notes.append(f"{where} raised {errors[k]}")
+    if any("[Errno 28]" in e for e in errors.values()):
+        result.run_notes.append(
+            f"'No space left on device' is a limit of the grader: /tmp and /dev/shm hold "
+            f"{lim.tmp_bytes >> 20} MB each, the job folder {lim.disk_bytes >> 20} MB"
         )
 
 
@@ -686,18 +806,7 @@ def grade_notebook(
         return result
     cells = [str(c.get("source", "")) for c in nb.cells if c.get("cell_type") == "code"]
     positions = [n for n, c in enumerate(nb.cells, start=1) if c.get("cell_type") == "code"]
-    manifest = manifest_of(nb)
-    if manifest is not None:
-        result.manifest_student = manifest["student"]
-        result.submitted = manifest["time"].isoformat()
-        result.time_source = "manifest"
-        if manifest["tampered"]:
-            result.run_notes.append("the notebook was changed after submit() (checksum mismatch)")
-        if manifest["homework"] != tests.homework:
-            result.run_notes.append(
-                f"submitted as {manifest['homework']!r}, graded as {tests.homework!r}"
-            )
-
+    _note_manifest(nb, tests.homework, result)
     variant_data = None
     if tests.variants:
         from course_lib import variants
@@ -708,6 +817,9 @@ def grade_notebook(
             result.run_notes.append(f"graded on the student's own data (variant {variant})")
     job, mounted = jobroot.job_folder(jobroot.job_root(job_root), opts.limits.disk_bytes)
     session = _Session(job, cells, opts, start + time_limit, result)
+    session.homework = tests.homework
+    # the sandbox shows it read-only: the homework's value guards hold in every process there
+    sandbox.grader_state_path(job).write_text(own_work.grader_state_text(tests.homework))
     try:
         session.responses = jobroot.response_folder(job, 4 * protocol.MAX_RESPONSE_BYTES, mounted)
         session.mounted = mounted
@@ -727,23 +839,17 @@ def grade_notebook(
             result.points[q] = round(fraction * tests.points[q], 2)
             result.fractions[q] = fraction
             result.notes[q] = note
-        for k in sorted(session.errors):
-            if len(result.run_notes) < 12:
-                where = describe_cell(k + 1, positions[k], cells[k])
-                result.run_notes.append(f"{where} raised {session.errors[k]}")
-        if any("[Errno 28]" in e for e in session.errors.values()):
-            lim = opts.limits
-            result.run_notes.append(
-                f"'No space left on device' is a limit of the grader: /tmp and /dev/shm hold "
-                f"{lim.tmp_bytes >> 20} MB each, the job folder {lim.disk_bytes >> 20} MB"
-            )
+        _note_cell_errors(session.errors, positions, cells, opts.limits, result)
     finally:
         session.close()
-        _note_disk(job, mounted, opts.limits.disk_bytes, result)
+        _note_limits(session.hits, opts.limits, result)
+        _note_disk(job, mounted, opts.limits.disk_bytes, result, session.hits)
         jobroot.remove_job_folder(job, mounted)
+        sandbox.grader_state_path(job).unlink(missing_ok=True)
     for q in questions:
         if result.fractions.get(q, 0.0) < 1.0 and not result.notes[q]:
             result.notes[q] = "wrong answer"
+    tamper.apply(result, cells, tests.homework, tests.points)  # flagged; certain: guards' points 0
     if mode != "bwrap":
         result.run_notes.append(UNSANDBOXED_NOTE)
     result.seconds = round(time.monotonic() - start, 1)

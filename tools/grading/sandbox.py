@@ -10,9 +10,13 @@ One sandbox per submission (per kernel).  What the student's kernel sees:
 * no network (its own network namespace), its own PID and IPC namespaces (it cannot see or
   signal the grader, other kernels or their files), ``--die-with-parent`` so nothing it starts
   survives the kernel, ``--new-session`` and no capabilities;
-* limits set before exec: address space (``--memory``, default 4 GiB), CPU time, file size,
-  no core dumps, and the number of processes (a ``pids`` cgroup when the grader runs as root and
-  can create one, ``RLIMIT_NPROC`` otherwise).
+* limits set before exec: address space (``--memory``, default 4 GiB), CPU time, file size
+  (the job folder's limit, ``--disk``), no core dumps, and the number of processes (a ``pids``
+  cgroup when the grader runs as root and can create one, ``RLIMIT_NPROC`` otherwise);
+* which limits a sandbox met is read from its own counters (``pids.events``,
+  ``memory.failcnt`` / ``memory.events``, the free space of its ``/tmp`` and ``/dev/shm``, the
+  peak address space of its processes), so a limit is named also when the student's code
+  caught the error.
 
 ``mode`` is ``"bwrap"`` (sandboxed) or ``"none"`` (the kernel runs with the grader's rights:
 only for machines without bubblewrap, e.g. macOS; the grader says so everywhere).  The limits
@@ -33,6 +37,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 
 import course_lib
+from course_lib import own_work
 
 LAUNCHER = Path(__file__).with_name("launch.py")
 GIB = 1 << 30
@@ -40,13 +45,24 @@ GIB = 1 << 30
 
 @dataclass(frozen=True)
 class Limits:
+    """What one sandbox may use.
+
+    ``file_bytes`` (the size of any one file, ``RLIMIT_FSIZE``) is by default the disk limit:
+    a lower file-size limit would make ``--disk`` a lie (with the old fixed 64 MB, a job folder
+    of ``--disk 128`` stopped at 64 MB for one big file, with "File too large").
+    """
+
     memory_bytes: int = 4 * GIB
     cpu_seconds: int = 600
-    file_bytes: int = 64 << 20
+    file_bytes: int | None = None  # None: disk_bytes
     processes: int = 64
     output_bytes: int = 1 << 20  # per cell, enforced by the grader (kernel killed past it)
     disk_bytes: int = 512 << 20  # the job folder (a size-limited tmpfs when the grader is root)
     tmp_bytes: int = 64 << 20  # the sandbox's /tmp, and its /dev/shm (RAM: tmpfs)
+
+    def __post_init__(self) -> None:
+        if self.file_bytes is None:
+            object.__setattr__(self, "file_bytes", int(self.disk_bytes))
 
 
 def bwrap_path() -> str | None:
@@ -99,6 +115,10 @@ def _visible_paths() -> list[Path]:
     wanted.add(root / "course_lib")
     venv = Path(sys.prefix).resolve()
     wanted.add(venv)
+    for lib in library_folders(_read(Path("/proc/self/maps"))):
+        if lib == temp or lib in temp.parents or lib == root or root in lib.parents:
+            continue  # never the temp folder whole (job roots) nor the checkout
+        wanted.add(lib)
     # drop paths inside other listed paths; never the course root itself
     out = sorted(wanted)
     kept: list[Path] = []
@@ -109,6 +129,36 @@ def _visible_paths() -> list[Path]:
             continue  # /usr is bound whole
         kept.append(p)
     return kept
+
+
+_SYSTEM_TOPS = frozenset(
+    {"usr", "lib", "lib32", "lib64", "libx32", "bin", "sbin", "proc", "sys", "dev", "etc"}
+)
+
+
+def library_folders(maps: str) -> list[Path]:
+    """The folders of the shared libraries mapped into a process (``/proc/<pid>/maps``'s text).
+
+    The grader's Python may load libraries from outside its prefix: a ``RUNPATH`` fixed at
+    build time (a relocated or hard-linked environment still loads ``libpython`` from where it
+    was built), a conda or Nix store beside it.  The kernel in the sandbox needs them too.
+    """
+    found: set[Path] = set()
+    for line in maps.splitlines():
+        parts = line.split(None, 5)
+        if len(parts) < 6:
+            continue
+        path = parts[5].strip()
+        name = path.rsplit("/", 1)[-1]
+        if not path.startswith("/") or path.endswith(" (deleted)"):
+            continue
+        if not (name.endswith(".so") or ".so." in name):
+            continue
+        folder = Path(os.path.normpath(path)).parent
+        if folder.parts[1:2] and folder.parts[1] in _SYSTEM_TOPS:
+            continue  # bound whole (bwrap_argv), or not libraries
+        found.add(folder)
+    return sorted(found)
 
 
 _ETC = [
@@ -160,6 +210,12 @@ def _needed_links(bound: list[Path]) -> list[tuple[str, str]]:
     return out
 
 
+def grader_state_path(job: Path) -> Path:
+    """The grader's own file beside ``job`` that the sandbox shows read-only at
+    ``own_work.GRADER_STATE_FILE`` (the runner writes it; the submission cannot)."""
+    return job.parent / f"{job.name}.state"
+
+
 def bwrap_argv(job: Path, limits: Limits | None = None) -> list[str]:
     """The bubblewrap command line (without the command) for a kernel in ``job``."""
     limits = limits or Limits()
@@ -196,6 +252,9 @@ def bwrap_argv(job: Path, limits: Limits | None = None) -> list[str]:
     for target, link in _needed_links(visible):
         argv += ["--symlink", target, link]
     argv += ["--bind", str(job), str(job), "--chdir", str(job)]
+    state = grader_state_path(job)  # which exercises are guarded now: the grader's, read-only
+    if state.is_file():
+        argv += ["--ro-bind", str(state), own_work.GRADER_STATE_FILE]
     # nothing else is writable: not the root bwrap builds, not /dev (both RAM, unbounded)
     argv += ["--remount-ro", "/dev", "--remount-ro", "/"]
     return argv
@@ -226,119 +285,319 @@ def kernel_environment(job: Path) -> dict[str, str]:
     return env
 
 
-def _own_cgroups() -> dict[str, Path]:
-    """controller -> the grader's own cgroup folder for it (v1 hierarchies, or v2's one)."""
-    base = Path("/sys/fs/cgroup")
+#: the controllers a sandbox uses
+CONTROLLERS = ("pids", "cpu", "memory")
+CGROUP_ROOT = Path("/sys/fs/cgroup")
+#: every control group this grading process makes starts so (``course-grader-<run>-<job>``):
+#: a check for groups left behind looks at its own run's only, whatever else runs on the host
+RUN_PREFIX = f"course-grader-{os.getpid()}-{uuid.uuid4().hex[:8]}"
+
+
+@dataclass(frozen=True)
+class CgroupLayout:
+    """What control groups the host offers the grader: a pure reading of what is mounted.
+
+    ``version``: 1 (one hierarchy per controller, ``pids.max``, ``memory.limit_in_bytes``,
+    ``cpu.shares``), 2 (the unified hierarchy: ``cgroup.controllers``, ``memory.max``,
+    ``cpu.weight``) or 0 (none usable).  ``own``: controller -> the group in which a
+    sandbox's group is made: the grader's own, or (v2) when that one enables no controller for
+    children and is not the root, the nearest ancestor that does (v2 puts a process in one
+    group only: every controller then has the same folder).  ``enable``: (v2) controllers the
+    own group offers (``cgroup.controllers``) but has not yet enabled for its children
+    (``cgroup.subtree_control``); enabling fails where the group holds processes.
+    """
+
+    version: int
+    own: dict[str, Path]
+    enable: tuple[str, ...] = ()
+
+
+def cgroup_layout(base: Path, self_cgroup: str) -> CgroupLayout:
+    """The layout of the control groups mounted at ``base``, for a process whose
+    ``/proc/self/cgroup`` reads ``self_cgroup``.
+
+    cgroup v2 when ``base`` itself is the unified hierarchy (it has ``cgroup.controllers``);
+    else cgroup v1, each controller at ``base/<controller>`` or at a shared mount such as
+    ``base/cpu,cpuacct`` (a v2 hierarchy beside them, ``base/unified``, holds no controller
+    and is ignored).  Reads only files under ``base``.
+    """
+    base = Path(base)
+    lines = [parts for parts in (ln.split(":", 2) for ln in self_cgroup.splitlines())
+             if len(parts) == 3]  # fmt: skip
+    if (base / "cgroup.controllers").is_file():
+        rel = next((r for _, names, r in lines if names == ""), None)
+        if rel is None:
+            return CgroupLayout(0, {})
+        own = base / rel.strip().lstrip("/")
+        offered = _read(own / "cgroup.controllers").split()
+        enabled = _read(own / "cgroup.subtree_control").split()
+        usable = [c for c in CONTROLLERS if c in offered or c in enabled]
+        if usable and own != base and not set(enabled) & set(CONTROLLERS):
+            # A group holding processes (the grader's session scope) cannot enable controllers
+            # for children ("no internal processes"); the nearest ancestor that has them on
+            # for its children (a systemd slice) takes the sandboxes' groups instead.
+            for parent in own.parents:
+                on = [c for c in CONTROLLERS if c in _read(parent / "cgroup.subtree_control")]
+                if on:
+                    return CgroupLayout(2, dict.fromkeys(on, parent))
+                if parent == base:
+                    break
+        return CgroupLayout(
+            2 if usable else 0,
+            dict.fromkeys(usable, own),
+            tuple(c for c in usable if c not in enabled),
+        )
     found: dict[str, Path] = {}
-    for line in _read(Path("/proc/self/cgroup")).splitlines():
-        parts = line.split(":", 2)
-        if len(parts) != 3:
-            continue
-        _, controllers, rel = parts
-        for ctrl in controllers.split(","):
-            if ctrl in ("pids", "cpu", "memory"):
-                for mount in (base / ctrl, base / controllers):
-                    path = mount / rel.lstrip("/")
-                    if (path / "cgroup.procs").exists():
-                        found.setdefault(ctrl, path)
-                        break
-        if controllers == "" and (base / "cgroup.controllers").exists():  # pure cgroup v2
-            path = base / rel.lstrip("/")
-            for ctrl in _read(path / "cgroup.subtree_control").split():
-                if ctrl in ("pids", "cpu", "memory"):
-                    found.setdefault(ctrl, path)
-    return found
+    for _, names, rel in lines:
+        for ctrl in names.split(","):
+            if ctrl not in CONTROLLERS or ctrl in found:
+                continue
+            for mount in (base / ctrl, base / names):
+                path = mount / rel.strip().lstrip("/")
+                if (path / "cgroup.procs").is_file():
+                    found[ctrl] = path
+                    break
+    return CgroupLayout(1 if found else 0, found)
+
+
+def host_cgroups() -> CgroupLayout:
+    """This host's layout, for this process (:func:`cgroup_layout` of the real files)."""
+    return cgroup_layout(CGROUP_ROOT, _read(Path("/proc/self/cgroup")))
+
+
+def run_groups(layout: CgroupLayout | None = None) -> set[str]:
+    """The control groups this grading process made and that still exist (none, once every
+    sandbox has ended)."""
+    layout = layout or host_cgroups()
+    return {str(p) for own in set(layout.own.values()) for p in own.glob(f"{RUN_PREFIX}-*")}
+
+
+def _settings(version: int, limits: Limits, memory: int) -> dict[str, list[tuple[str, str]]]:
+    """controller -> the files (names as the kernel's documentation gives them) and values."""
+    if version == 1:
+        return {
+            "pids": [("pids.max", str(limits.processes))],
+            "cpu": [("cpu.shares", "1024"), ("cpu.cfs_period_us", "100000"),
+                    ("cpu.cfs_quota_us", "100000")],
+            "memory": [("memory.limit_in_bytes", str(memory))],
+        }  # fmt: skip
+    return {
+        "pids": [("pids.max", str(limits.processes))],
+        "cpu": [("cpu.weight", "100"), ("cpu.max", "100000 100000")],
+        "memory": [("memory.max", str(memory)), ("memory.swap.max", "0")],
+    }
+
+
+#: written only where the kernel offers them (swap accounting may be off)
+_OPTIONAL = frozenset({"memory.swap.max"})
+
+
+def _events(path: Path) -> dict[str, int]:
+    """A flat-keyed counter file (``pids.events``, ``memory.events``): key -> count."""
+    out: dict[str, int] = {}
+    for line in _read(path).splitlines():
+        parts = line.split()
+        if len(parts) == 2 and parts[1].isdigit():
+            out[parts[0]] = int(parts[1])
+    return out
+
+
+def _count(path: Path) -> int:
+    text = _read(path).strip()
+    return int(text) if text.isdigit() else 0
 
 
 class SandboxGroups:
-    """Control groups of one sandbox (root only), nested in the grader's own groups.
+    """Control groups of one sandbox (root only), nested in the grader's own groups (cgroup
+    v2: or in the nearest ancestor that enables the controllers, :class:`CgroupLayout`), named
+    ``RUN_PREFIX-<job>``.
 
     ``pids``: at most ``limits.processes`` processes; ``cpu``: the share of any other sandbox
     (``cpu.shares``/``cpu.weight``) and at most one core, whatever number of processes it
     starts; ``memory``: ``limits.memory_bytes`` for all its processes *and* the files they
-    write into ``tmpfs`` (``/tmp``, ``/dev/shm``, a tmpfs job folder), which the address-space
-    limit does not count.  ``paths`` is empty where none can be made (not root, no cgroups):
-    then ``RLIMIT_NPROC``, ``nice`` and the size-limited tmpfs are what bound the sandbox.
+    write into ``tmpfs`` (``/tmp``, ``/dev/shm``, and the job folder when ``job_tmpfs``),
+    which the address-space limit does not count.  ``paths`` is empty where none can be made
+    (not root, no cgroups): then ``RLIMIT_NPROC``, ``nice`` and the size-limited tmpfs are
+    what bound the sandbox.  ``layout`` and ``root_only`` are for tests (a fake cgroupfs).
     """
 
-    def __init__(self, limits: Limits) -> None:
+    def __init__(
+        self,
+        limits: Limits,
+        *,
+        job_tmpfs: bool = False,
+        layout: CgroupLayout | None = None,
+        root_only: bool = True,
+    ) -> None:
         self.paths: dict[str, Path] = {}
-        if os.geteuid() != 0:
+        self.version = 0
+        if root_only and os.geteuid() != 0:
             return
-        name = f"course-grader-{uuid.uuid4().hex[:12]}"
-        for ctrl, parent in _own_cgroups().items():
-            path = parent / name
-            if path in self.paths.values():
-                self.paths[ctrl] = path  # cgroup v2: one folder for every controller
-                self._configure(ctrl, path, limits)
-                continue
+        layout = layout if layout is not None else host_cgroups()
+        self.version = layout.version
+        memory = limits.memory_bytes + 2 * limits.tmp_bytes
+        if job_tmpfs:
+            memory += limits.disk_bytes
+        settings = _settings(layout.version, limits, memory)
+        owns = dict(layout.own)
+        for ctrl in layout.enable:  # v2: let the sandbox's group have the controller
             try:
-                path.mkdir()
+                (owns[ctrl] / "cgroup.subtree_control").write_text(f"+{ctrl}")
             except OSError:
-                continue
+                del owns[ctrl]  # e.g. the grader's own group holds processes (not delegated)
+        name = f"{RUN_PREFIX}-{uuid.uuid4().hex[:12]}"
+        for ctrl, parent in owns.items():
+            path = parent / name
+            if path not in self.paths.values():
+                try:
+                    path.mkdir()
+                except OSError:
+                    continue
             self.paths[ctrl] = path
-            if not self._configure(ctrl, path, limits):
+            if not _configure(path, settings[ctrl]):
                 del self.paths[ctrl]
                 if path not in self.paths.values():
                     _rmdir(path)
 
-    @staticmethod
-    def _configure(ctrl: str, path: Path, limits: Limits) -> bool:
-        memory = limits.memory_bytes + 2 * limits.tmp_bytes
-        settings = {
-            "pids": [("pids.max", str(limits.processes))],
-            "cpu": [("cpu.shares", "1024"), ("cpu.cfs_period_us", "100000"),
-                    ("cpu.cfs_quota_us", "100000")]
-            if (path / "cpu.shares").exists()
-            else [("cpu.weight", "100"), ("cpu.max", "100000 100000")],
-            "memory": [("memory.limit_in_bytes", str(memory))]
-            if (path / "memory.limit_in_bytes").exists()
-            else [("memory.max", str(memory)), ("memory.swap.max", "0")],
-        }[ctrl]  # fmt: skip
-        try:
-            for key, value in settings:
-                if key == "memory.swap.max" and not (path / key).exists():
-                    continue
-                (path / key).write_text(value)
-        except OSError:
-            return False
-        return True
-
     @property
     def procs_files(self) -> list[str]:
         return sorted({str(p / "cgroup.procs") for p in self.paths.values()})
+
+    def pids(self) -> list[int]:
+        """The processes in the sandbox's groups now."""
+        found: set[int] = set()
+        for path in set(self.paths.values()):
+            found |= {int(p) for p in _read(path / "cgroup.procs").split() if p.isdigit()}
+        return sorted(found)
+
+    def limits_reached(self) -> set[str]:
+        """Which limits the sandbox met, by its groups' own counters: ``"processes"`` (a fork
+        refused at ``pids.max``: ``pids.events`` ``max``), ``"memory"`` (v1
+        ``memory.failcnt``; v2 ``memory.events`` ``max`` or ``oom_kill``) -- also when the
+        student's code caught the error."""
+        hit: set[str] = set()
+        pids = self.paths.get("pids")
+        if pids is not None and _events(pids / "pids.events").get("max", 0) > 0:
+            hit.add("processes")
+        mem = self.paths.get("memory")
+        if mem is not None:
+            if self.version == 1:
+                met = _count(mem / "memory.failcnt") > 0
+            else:
+                events = _events(mem / "memory.events")
+                met = events.get("max", 0) + events.get("oom_kill", 0) > 0
+            if met:
+                hit.add("memory")
+        return hit
 
     def memory_exhausted(self) -> bool:
         """Did the memory limit stop the sandbox (an out-of-memory kill in its group)?"""
         path = self.paths.get("memory")
         if path is None:
             return False
-        if (path / "memory.failcnt").exists():
-            try:
-                return int(_read(path / "memory.failcnt") or 0) > 0
-            except ValueError:
-                return False
-        events = dict(
-            line.split() for line in _read(path / "memory.events").splitlines() if " " in line
-        )
-        return int(events.get("oom_kill", 0) or 0) > 0
+        if self.version == 1:
+            return _count(path / "memory.failcnt") > 0
+        return _events(path / "memory.events").get("oom_kill", 0) > 0
 
     def kill_and_remove(self, wait: float = 3.0) -> None:
         """Kill whatever is left in the groups and remove them (once the kernel reaped it)."""
         deadline = time.monotonic() + wait
         while self.paths:
-            for path in set(self.paths.values()):
-                for pid in _read(path / "cgroup.procs").split():
-                    try:
-                        os.kill(int(pid), 9)
-                    except (OSError, ValueError):
-                        pass
+            for pid in self.pids():
+                try:
+                    os.kill(pid, 9)
+                except OSError:
+                    pass
             for ctrl, path in list(self.paths.items()):
                 if _rmdir(path) or not path.exists():
                     del self.paths[ctrl]
             if not self.paths or time.monotonic() > deadline:
                 return  # still busy: an empty group costs nothing; never block the batch
             time.sleep(0.05)
+
+
+def _configure(path: Path, settings: list[tuple[str, str]]) -> bool:
+    try:
+        for key, value in settings:
+            if key in _OPTIONAL and not (path / key).exists():
+                continue
+            (path / key).write_text(value)
+    except OSError:
+        return False
+    return True
+
+
+#: the sandbox's RAM-backed folders, checked for being full (a caught 'No space left')
+TMPFS_MOUNTS = ("/tmp", "/dev/shm")
+
+
+def full_tmpfs(pids: list[int], mounts: tuple[str, ...] = TMPFS_MOUNTS) -> set[str]:
+    """Which of the sandbox's ``mounts`` are full (less than 1 % free), seen through
+    ``/proc/<pid>/root`` of its processes; the grader's own folders of the same names (the
+    processes outside the sandbox's mount namespace) are skipped."""
+    own: dict[str, int] = {}
+    for m in mounts:
+        try:
+            own[m] = os.stat(m).st_dev
+        except OSError:
+            own[m] = -1
+    full: set[str] = set()
+    for pid in pids:
+        for m in mounts:
+            if m in full:
+                continue
+            where = f"/proc/{pid}/root{m}"
+            try:
+                if os.stat(where).st_dev == own[m]:
+                    continue
+                sv = os.statvfs(where)
+            except OSError:
+                continue
+            size = sv.f_blocks * sv.f_frsize
+            if size and sv.f_bavail * sv.f_frsize * 100 <= size:
+                full.add(m)
+    return full
+
+
+#: a process whose address space came this close to ``--memory`` had allocations refused
+#: (``MemoryError``) or was about to: the kernel counts no refused allocation itself
+NEAR_MEMORY_LIMIT = 0.9
+
+
+def peak_address_space(pids: list[int]) -> int:
+    """The largest ``VmPeak`` (bytes) of ``pids``: the most address space any of them held."""
+    peak = 0
+    for pid in pids:
+        for line in _read(Path(f"/proc/{pid}/status")).splitlines():
+            if line.startswith("VmPeak:"):
+                parts = line.split()
+                if len(parts) >= 2 and parts[1].isdigit():
+                    peak = max(peak, int(parts[1]) * 1024)  # kB
+                break
+    return peak
+
+
+def descendants(root: int) -> list[int]:
+    """``root`` and every process below it (by ``/proc/<pid>/stat``'s parent field)."""
+    children: dict[int, list[int]] = {}
+    try:
+        entries = [e for e in os.listdir("/proc") if e.isdigit()]
+    except OSError:
+        return [root]
+    for entry in entries:
+        try:
+            stat_line = Path(f"/proc/{entry}/stat").read_text()
+        except OSError:
+            continue
+        fields = stat_line.rsplit(")", 1)[-1].split()
+        if len(fields) > 1 and fields[1].isdigit():
+            children.setdefault(int(fields[1]), []).append(int(entry))
+    out, todo = [], [root]
+    while todo:
+        pid = todo.pop()
+        out.append(pid)
+        todo += children.get(pid, [])
+    return out
 
 
 def _rmdir(path: Path) -> bool:

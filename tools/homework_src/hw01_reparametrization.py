@@ -4,7 +4,7 @@
 
 # %% [markdown]
 # *Geometric continuity of parametric curves* · Homework 1 of 5 · after the lecture
-# [01 Reparametrization](../notebooks/01_reparametrization.ipynb) (seed 000 §1–4, seed 004 §19.2).
+# [01 Parametric continuity](../notebooks/01_parametric_continuity.ipynb) and [02 Reparametrization](../notebooks/02_reparametrization.ipynb) (seed 000 §1–4, seed 004 §19.2).
 #
 # # Homework 1 — Parametrizations, the unit tangent and reparametrization
 #

@@ -4,7 +4,7 @@
 
 # %% [markdown]
 # *Geometric continuity of parametric curves* · Homework 2 of 5 · after the lecture
-# [02 Beta-constraints](../notebooks/02_beta_constraints.ipynb) (seed 000 §5–7, seed 001 eq. 2.7).
+# [03 Beta-constraints](../notebooks/03_beta_constraints.ipynb) and [04 Arc length and Theorem 1](../notebooks/04_arc_length_and_theorem_1.ipynb) (seed 000 §5–7, seed 001 eq. 2.7).
 #
 # # Homework 2 — The Beta-constraints
 #

@@ -4,7 +4,7 @@
 
 # %% [markdown]
 # *Geometric continuity of parametric curves* · Homework 3 of 5 · after the lecture
-# [04 G1 Bézier splines from knots](../notebooks/04_g1_knot_bezier_splines.ipynb) (seed 004 §19.5–19.8).
+# [06 G1 Bézier splines from knots](../notebooks/06_g1_knot_bezier_splines.ipynb) (seed 004 §19.5–19.8).
 #
 # # Homework 3 — G1 Bézier splines from a knot sequence
 #

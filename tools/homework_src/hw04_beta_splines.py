@@ -4,7 +4,7 @@
 
 # %% [markdown]
 # *Geometric continuity of parametric curves* · Homework 4 of 5 · after the lecture
-# [05 Stitching Bézier curves](../notebooks/05_stitching_bezier_curves.ipynb) and [06 Beta-splines](../notebooks/06_beta_splines.ipynb) (stitching Bézier curves, Beta-splines; seed 000 §8, §10).
+# [07 Stitching Bézier curves](../notebooks/07_stitching_bezier_curves.ipynb) and [08 Beta-splines](../notebooks/08_beta_splines.ipynb) (stitching Bézier curves, Beta-splines; seed 000 §8, §10).
 #
 # # Homework 4 — Stitching Bézier curves and Beta-splines
 #

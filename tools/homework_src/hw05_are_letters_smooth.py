@@ -4,7 +4,7 @@
 
 # %% [markdown]
 # *Geometric continuity of parametric curves* · Homework 5 of 5 · after the lecture
-# [09 Are letters smooth?](../notebooks/09_are_letters_smooth.ipynb) (TrueType outlines, implied
+# [11 Are letters smooth?](../notebooks/11_are_letters_smooth.ipynb) (TrueType outlines, implied
 # points, curvature combs; Beta-splines of seed 000 §10.1–10.2).
 #
 # # Homework 5 — Are letters smooth?
