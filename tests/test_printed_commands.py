@@ -718,8 +718,8 @@ def run_dask_synopsis(root: Path) -> str:
 
 
 def test_the_dask_synopsis_grades_on_one_machine(all_runs):
-    """Every row graded on the scheduler and workers the synopsis starts (without
-    ``PYTHONPATH=tools`` on the scheduler, every row says "grader error")."""
+    """Every row graded on the scheduler and workers the synopsis starts (a scheduler that
+    cannot import ``tools.grading`` fails every row as "grader error")."""
     root, output = all_runs["dask"]
     assert "wrote " in output and "your-id:" in output, output[-3000:]
     assert "grader error" not in output and "Traceback" not in output, output[-3000:]
