@@ -4,7 +4,7 @@ Importing ``course_lib`` loads numpy only.  Symbolic work (sympy), plotting
 (matplotlib) and widgets (ipywidgets, ipympl) live in submodules that import
 their heavy dependencies lazily, inside the functions that need them.
 
-The central type is :class:`~course_lib.curve.PiecewiseBezier`: every
+The central type is :class:`~course_lib.curves.curve.PiecewiseBezier`: every
 construction returns one, every analysis, plot and widget consumes one.
 
 Imported in a Jupyter kernel, it registers :mod:`course_lib.figure_alt`'s hook: JupyterLab
@@ -13,8 +13,8 @@ then shows each figure's text alternative (cell metadata) as a line under the fi
 
 from __future__ import annotations
 
-from . import figure_alt
-from .curve import PiecewiseBezier
+from course_lib import figure_alt
+from course_lib.curves.curve import PiecewiseBezier
 
 # in a Jupyter kernel: a figure's alt text (cell metadata mystnb.image.alt) is shown under it
 figure_alt.register_in_kernel()

@@ -26,8 +26,8 @@ import sympy as sp
 
 matplotlib.use("Agg")
 
-from course_lib import answers, variants
-from course_lib.checks import HOMEWORKS, check, questions, registry
+from course_lib.homework import answers, variants
+from course_lib.homework.checks import HOMEWORKS, check, questions, registry
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tools"))
@@ -642,7 +642,7 @@ def test_the_check_and_the_grader_read_the_same_plain_data():
 
     from grading.protocol import decode_value
 
-    from course_lib import _probe
+    from course_lib.homework import protocol as _probe
 
     values = [
         2.5, np.float32(1.5), np.int64(3), np.array([2.5]), [1, 2.0], (1, (2, 3)), sp.Rational(1, 3),

@@ -15,7 +15,7 @@ import nbformat
 import pytest
 from _homework_support import differ, load
 
-from course_lib import variants
+from course_lib.homework import variants
 
 ROOT = Path(__file__).resolve().parents[1]
 HOMEWORKS = ("hw01", "hw02", "hw03", "hw04", "hw05")

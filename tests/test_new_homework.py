@@ -49,9 +49,9 @@ root, hw = Path.cwd(), sys.argv[1]
 sys.path.insert(0, str(root / "tools"))
 import build_homework as build
 from grading.protocol import LocalStudent, run_question
-import course_lib.checks
+import course_lib.homework.checks
 
-out = {"course_lib": course_lib.checks.__file__, "homeworks": list(course_lib.checks.HOMEWORKS),
+out = {"course_lib": course_lib.homework.checks.__file__, "homeworks": list(course_lib.homework.checks.HOMEWORKS),
        "build_check": build.main(["--check"])}
 (source,) = [s for s in build.sources() if s.stem.startswith(hw + "_")]
 
@@ -157,7 +157,7 @@ def test_scaffolder_writes_the_files_and_says_what_to_do(scaffolded):
         and p.suffix in (".py", ".ipynb")
     )  # fmt: skip
     assert new == sorted([
-        f"course_lib/checks/{hw}.py", f"course_lib/checks/_variants_{hw}.py",
+        f"course_lib/homework/checks/{hw}.py", f"course_lib/homework/checks/_variants_{hw}.py",
         f"exercises/{stem}.ipynb", f"solutions/hidden_tests/{hw}.py",
         f"solutions/{stem}.ipynb", f"tools/homework_src/{stem}.py", "driver.py",
     ])  # fmt: skip

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 from _homework_support import load
 
-from course_lib import variants
+from course_lib.homework import variants
 
 ROOT = Path(__file__).resolve().parents[1]
 tool = load("variant_tool", ROOT / "tools" / "variant.py")

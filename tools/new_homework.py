@@ -10,9 +10,9 @@ writes
   ``tools/build_homework.py``): title, how to work, Preparations with ``HOMEWORK = "hw05"``, one
   value question and one function question as examples, their check cells, "Check everything"
   and "Hand in";
-* ``course_lib/checks/hw05.py`` -- the feedback checks of the two example questions;
-* ``course_lib/checks/_variants_hw05.py`` -- the generator of every student's own data
-  (per-student variants, ``course_lib/variants.py``): the value question reads its data from
+* ``course_lib/homework/checks/hw05.py`` -- the feedback checks of the two example questions;
+* ``course_lib/homework/checks/hw05.py`` -- the generator of every student's own data
+  (per-student variants, ``course_lib/homework/variants.py``): the value question reads its data from
   ``DATA = variants.data(HOMEWORK, VARIANT)``, the check from ``variants.current``, the hidden
   test from its ``data`` argument;
 * ``solutions/hidden_tests/hw05.py`` -- the hidden tests of the two example questions (form:
@@ -20,7 +20,7 @@ writes
 * ``exercises/hw05_are_letters_smooth.ipynb`` and ``solutions/...`` -- by running
   ``tools/build_homework.py``.
 
-Nothing is registered by hand: the list of homework (``course_lib.checks.HOMEWORKS``) and the
+Nothing is registered by hand: the list of homework (``course_lib.homework.checks.HOMEWORKS``) and the
 test suite's lists are derived from these files.  It never overwrites a file: if anything of
 ``hwNN`` exists already it stops and changes nothing.  What to do next is printed at the end and
 written in CONTRIBUTING.md ("Homework: the rules the tests enforce").
@@ -149,8 +149,8 @@ SOURCE = r'''# Source of exercises/@STEM@.ipynb and solutions/@STEM@.ipynb.
 # %%
 import numpy as np
 
-from course_lib import variants
-from course_lib.checks import check, check_all
+from course_lib.homework import variants
+from course_lib.homework.checks import check, check_all
 
 HOMEWORK = "@HW@"
 VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "KQW7MZP3XS"
@@ -219,7 +219,7 @@ report
 # gave you with your variant code (your id on the course roster, e.g. your student number / SIS id):
 #
 # * in a terminal, from the course folder: `make submit HW=@HW@ STUDENT=your-id`
-# * in a new cell here: `from course_lib.submit import submit; submit("@STEM@.ipynb", student="your-id")`
+# * in a new cell here: `from course_lib.homework.submit import submit; submit("@STEM@.ipynb", student="your-id")`
 #
 # Either runs the notebook top to bottom in a fresh kernel, as the grader will, lists the cells that
 # fail, and writes `submissions/@HW@-your-id.ipynb`. Upload that file. The checks above are feedback;
@@ -234,7 +234,7 @@ the notebook (``exercises/@STEM@.ipynb``).  The question data is stated in the n
 repeated here; the solution notebook, executed by the test suite, passes every check, which keeps
 the two in step.  A check tests properties of the answer or compares it with a value computed here
 at check time, reads the answer with the readers of ``_core`` (the grader's
-:mod:`course_lib.answers`) and never prints an expected value.
+:mod:`course_lib.homework.answers`) and never prints an expected value.
 """
 
 from __future__ import annotations
@@ -276,7 +276,7 @@ def _q2(func):
 HIDDEN = r'''"""Hidden tests of homework @N@: @TITLE@ (run by tools/grade.py in the grader; never shipped).
 
 Scaffolded by ``tools/new_homework.py``: replace the two example tests by one ``qN(student)`` per
-question of ``course_lib/checks/@HW@.py``, in the same order in ``POINTS``.  Form and rules:
+question of ``course_lib/homework/checks/@HW@.py``, in the same order in ``POINTS``.  Form and rules:
 ``solutions/hidden_tests/README.md``.  Expected values are computed here from ``DATA`` with
 closed forms derived by hand (derivations next to them), never with course_lib's mathematics or
 the solution notebook's code.
@@ -288,12 +288,12 @@ import math
 
 import numpy as np
 
-from course_lib import answers
+from course_lib.homework import answers
 
 HOMEWORK = "@HW@"
 POINTS = {"q1": 1, "q2": 2}
 #: per-student variants: the grader calls qN(student, data) with the student's own data
-#: (``course_lib/checks/_variants_@HW@.py``); without data, the default data below
+#: (``course_lib/homework/checks/_variants_@HW@.py``); without data, the default data below
 VARIANTS = True
 
 #: The default data (what ``variants.data("@HW@", "")`` gives).
@@ -342,7 +342,7 @@ def answers_for(data):
 GENERATOR = r'''"""The question data of homework @N@ as a function of a random generator (per-student variants).
 
 ``generate(None)`` is the default data (the notebook's ``VARIANT = ""``); ``generate(rng)`` a
-student's own variant (:mod:`course_lib.variants`: the code the instructor hands out seeds
+student's own variant (:mod:`course_lib.homework.variants`: the code the instructor hands out seeds
 ``rng``).  Emit only well-posed data: a test over many codes should prove it
 (``tests/test_variants_hw01.py`` is the model).
 """

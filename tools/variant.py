@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Per-student homework variants, the instructor's side (issue 19; ``course_lib.variants``).
+"""Per-student homework variants, the instructor's side (issue 19; ``course_lib.homework.variants``).
 
 Usage::
 
@@ -19,7 +19,7 @@ Usage::
 The roster is the course's CSV (``id`` column) or an LMS export as downloaded (Canvas's
 gradebook export: the SIS User ID; Moodle's grading worksheet or grades export: the ID number,
 else the e-mail) -- give ``codes`` and ``tools/grade.py`` the same file.  A code is 10
-characters without look-alikes, the last a check character (``course_lib.variants``).
+characters without look-alikes, the last a check character (``course_lib.homework.variants``).
 """
 
 from __future__ import annotations
@@ -49,7 +49,7 @@ sys.path.insert(0, str(ROOT))
 from grading import reports  # noqa: E402
 from grading.safe_names import safe_csv_writer  # noqa: E402
 
-from course_lib import variants  # noqa: E402
+from course_lib.homework import variants  # noqa: E402
 
 DEFAULT_SECRET = Path("course_secret.txt")
 

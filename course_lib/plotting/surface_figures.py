@@ -2,7 +2,7 @@
 parameter lines of a patch under a change of parameters (Fig. 8).
 
 Like every plotting module, these take a 3D Axes and return their artists; the points
-come from :class:`~course_lib.surfaces.BezierPatch` (the math layer).
+come from :class:`~course_lib.constructions.surfaces.BezierPatch` (the math layer).
 """
 
 from __future__ import annotations
@@ -11,9 +11,9 @@ from collections.abc import Callable
 
 import numpy as np
 
-from .._validation import check_integer
-from .style import OKABE_ITO
-from .surfaces3d import _require_3d, plot_patch
+from course_lib.plotting.style import OKABE_ITO
+from course_lib.plotting.surfaces3d import _require_3d, plot_patch
+from course_lib.validation import check_integer
 
 __all__ = ["plot_domain_and_patch", "plot_parameter_lines"]
 

@@ -12,8 +12,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .._validation import check_integer
-from .style import OKABE_ITO, ROLE_COLORS
+from course_lib.plotting.style import OKABE_ITO, ROLE_COLORS
+from course_lib.validation import check_integer
 
 __all__ = ["PatchArtists", "PatchPairArtists", "plot_patch", "plot_patch_pair"]
 
@@ -44,7 +44,7 @@ def plot_patch(
     alpha: float = 0.55,
     label: str | None = None,
 ) -> PatchArtists:
-    """Draw a :class:`~course_lib.surfaces.BezierPatch` as a shaded surface with its control net.
+    """Draw a :class:`~course_lib.constructions.surfaces.BezierPatch` as a shaded surface with its control net.
 
     Parameters
     ----------
@@ -190,7 +190,7 @@ def plot_patch_pair(
     for axis in (ax.xaxis, ax.yaxis, ax.zaxis):  # few ticks: the numbers are not the point
         axis.set_major_locator(MaxNLocator(4))
     motion = None
-    from ._motion import LightWhileRotating, is_interactive_canvas
+    from course_lib.plotting._motion import LightWhileRotating, is_interactive_canvas
 
     if is_interactive_canvas(ax.get_figure(root=True).canvas):
         # turning the picture with the mouse: coarse surfaces and a frozen layout until release

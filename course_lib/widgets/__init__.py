@@ -22,8 +22,15 @@ full frame; ``cl-check-details`` shows the report's higher orders and residuals.
 
 from __future__ import annotations
 
-from ._core import BlitView, CurveDemoState, CurveDemoView, Demo, SliderSpec, joint_report
-from .demos import (
+from course_lib.widgets._core import (
+    BlitView,
+    CurveDemoState,
+    CurveDemoView,
+    Demo,
+    SliderSpec,
+    joint_report,
+)
+from course_lib.widgets.demos import (
     beta_spline_demo,
     catmull_rom_demo,
     curvature_comb_demo,
@@ -32,9 +39,9 @@ from .demos import (
     quartic_beta_spline_demo,
     reparametrization_demo,
 )
-from .interactor import PointDragger
-from .outlines import GlyphDemoState, glyph_demo
-from .reparam import ReparametrizationState
+from course_lib.widgets.interactor import PointDragger
+from course_lib.widgets.outlines import GlyphDemoState, glyph_demo
+from course_lib.widgets.reparam import ReparametrizationState
 
 __all__ = [
     "BlitView",

@@ -8,7 +8,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from ._core import CurveDemoState, Demo, SliderSpec
+from course_lib.widgets._core import CurveDemoState, Demo, SliderSpec
 
 __all__ = ["assemble_curve_demo", "readout_format", "snap_to_step"]
 
@@ -112,7 +112,7 @@ def assemble_curve_demo(
     """Add the standard widgets to ``demo`` (whose state is a :class:`CurveDemoState`)."""
     import ipywidgets as w
 
-    from .interactor import PointDragger
+    from course_lib.widgets.interactor import PointDragger
 
     st: CurveDemoState = demo.state
     rows = []
@@ -233,7 +233,7 @@ def assemble_curve_demo(
     rows.extend(extra_rows)
     rows.append(details_checkbox(demo))
     if draggable:  # keyboard access to the points, and the live verdict (widgets/access.py)
-        from .access import point_controls
+        from course_lib.widgets.access import point_controls
 
         rows.append(point_controls(demo))
 
@@ -267,7 +267,7 @@ def observe(demo: Demo, widget, fn) -> None:
     """``widget.observe(fn)`` on ``value``, guarded (errors shown) and coalesced: a value
     from the browser that waited behind the previous redraw is superseded by the newest.
     A value set by code (ipywidgets holds no property lock for it) is handled at once."""
-    from ._coalesce import Coalescer
+    from course_lib.widgets._coalesce import Coalescer
 
     def from_browser() -> bool:
         return "value" in getattr(widget, "_property_lock", {})

@@ -13,8 +13,8 @@
   error output), or, with ``static=True`` or without ipywidgets/ipympl, just the figure.
 
 The math is called, never written here: every curve comes from the construction the
-demo was given, every number from :mod:`course_lib.continuity` and
-:mod:`course_lib.differential_geometry`.
+demo was given, every number from :mod:`course_lib.geometry.continuity` and
+:mod:`course_lib.geometry.differential_geometry`.
 """
 
 from __future__ import annotations
@@ -26,7 +26,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from .._validation import as_points, check_finite_scalar, check_integer
+from course_lib.validation import as_points, check_finite_scalar, check_integer
 
 __all__ = [
     "CANVAS_WIDTH_PX",
@@ -44,8 +44,8 @@ __all__ = [
 # --------------------------------------------------------------------- math calls
 def joint_report(curve, j: int, max_order: int = 3):
     """The continuity report of joint ``j`` only (segments ``j`` and ``j + 1``, global parameter)."""
-    from ..continuity import curve_continuity
-    from ..curve import PiecewiseBezier
+    from course_lib.curves.curve import PiecewiseBezier
+    from course_lib.geometry.continuity import curve_continuity
 
     k = curve.knots
     pair = PiecewiseBezier(curve.segments[j : j + 2], k[j : j + 3] if curve.has_knots else None)
@@ -294,7 +294,7 @@ class CurveDemoState:
                 f"{html.escape(self.warning)}</p>"
             )
         if self.report is not None:
-            from .report import demo_report_html
+            from course_lib.widgets.report import demo_report_html
 
             parts.append(demo_report_html(self.report, self.order, self.show_details))
         elif not self.warning:
@@ -335,7 +335,7 @@ def _ipympl_canvas_classes():
 
     import matplotlib
 
-    from ..plotting.style import resolve_pyplot_backend
+    from course_lib.plotting.style import resolve_pyplot_backend
 
     resolve_pyplot_backend()
     before = matplotlib.get_backend() if "matplotlib.pyplot" in sys.modules else None
@@ -351,7 +351,7 @@ def make_figure(figsize: tuple[float, float], static: bool):
     (``canvas_width_px()`` wide: the dpi is chosen for it, the layout stays the same)."""
     from matplotlib.figure import Figure
 
-    from ..plotting.style import course_style
+    from course_lib.plotting.style import course_style
 
     dpi = 100.0 if static else canvas_width_px() / float(figsize[0])
     with course_style():
@@ -512,7 +512,7 @@ class CurveDemoView(BlitView):
         blit: bool | None = None,
         profile_samples: int | None = None,
     ) -> None:
-        from ..plotting import (
+        from course_lib.plotting import (
             plot_control_polygon,
             plot_curvature_comb,
             plot_curvature_profile,
@@ -520,7 +520,7 @@ class CurveDemoView(BlitView):
             plot_frame,
             plot_osculating_circle,
         )
-        from ..plotting.style import OKABE_ITO, course_style
+        from course_lib.plotting.style import OKABE_ITO, course_style
 
         self.state = state
         self._done: dict = {}  # what was last computed for which curve (see _once)
@@ -816,7 +816,7 @@ class Demo:
     # ----------------------------------------------------------- display
     def _repr_mimebundle_(self, **kwargs):
         if self.widget is not None:
-            from .access import publish_slider_names
+            from course_lib.widgets.access import publish_slider_names
 
             publish_slider_names()  # names the slider handles (ipywidgets leaves them unnamed)
             return self.widget._repr_mimebundle_(**kwargs)

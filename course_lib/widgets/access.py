@@ -253,7 +253,7 @@ class PointControls:
         self.ring = None
         view = getattr(demo, "view", None)
         if view is not None and getattr(view, "ax", None) is not None:
-            from ..plotting.style import OKABE_ITO
+            from course_lib.plotting.style import OKABE_ITO
 
             (self.ring,) = view.ax.plot(
                 [],

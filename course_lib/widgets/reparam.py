@@ -13,8 +13,15 @@ import html
 
 import numpy as np
 
-from .._validation import as_points, check_finite_scalar
-from ._core import BlitView, Demo, SliderSpec, _widgets_available, fit_equal_limits, make_figure
+from course_lib.validation import as_points, check_finite_scalar
+from course_lib.widgets._core import (
+    BlitView,
+    Demo,
+    SliderSpec,
+    _widgets_available,
+    fit_equal_limits,
+    make_figure,
+)
 
 __all__ = ["ReparametrizationState", "reparametrization_demo"]
 
@@ -31,11 +38,11 @@ class ReparametrizationState:
     ------
     ValueError
         If ``|a| >= 1`` (then ``f`` is not orientation preserving), from
-        :class:`~course_lib.reparametrization.ChangeOfVariables`.
+        :class:`~course_lib.geometry.reparametrization.ChangeOfVariables`.
     """
 
     def __init__(self, points=None, a: float = 0.6, v: float = 0.3, samples: int = 11) -> None:
-        from ..curve import PiecewiseBezier
+        from course_lib.curves.curve import PiecewiseBezier
 
         self.points = as_points(
             _DEFAULT if points is None else points, "points", min_points=2, dims=(2,)
@@ -52,7 +59,7 @@ class ReparametrizationState:
 
     @staticmethod
     def _change(a: float):
-        from ..reparametrization import ChangeOfVariables
+        from course_lib.geometry.reparametrization import ChangeOfVariables
 
         return ChangeOfVariables.polynomial([0.0, 1.0 + a, -a], (0.0, 1.0), (0.0, 1.0))
 
@@ -68,15 +75,15 @@ class ReparametrizationState:
         self.update()
 
     def drag(self, k: int, x: float, y: float) -> None:
-        from ..curve import PiecewiseBezier
+        from course_lib.curves.curve import PiecewiseBezier
 
         self.points[k] = (x, y)
         self.curve = PiecewiseBezier([self.points])
         self.update()
 
     def compute(self) -> None:
-        from .. import differential_geometry as dg
-        from ..reparametrization import Reparametrized
+        from course_lib.geometry import differential_geometry as dg
+        from course_lib.geometry.reparametrization import Reparametrized
 
         self.reparametrized = Reparametrized(self.curve, self.f)
         u = float(self.f(self.v))
@@ -132,8 +139,8 @@ class ReparametrizationView(BlitView):
     the moving artists are redrawn (blitted over a cached background, :class:`BlitView`)."""
 
     def __init__(self, state: ReparametrizationState, static: bool) -> None:
-        from ..plotting import plot_control_polygon, plot_curve, plot_vectors
-        from ..plotting.style import OKABE_ITO, course_style
+        from course_lib.plotting import plot_control_polygon, plot_curve, plot_vectors
+        from course_lib.plotting.style import OKABE_ITO, course_style
 
         self.state = state
         self.fig = make_figure((10.0, 4.6), static)
@@ -229,15 +236,15 @@ def reparametrization_demo(
     if static:
         return demo
 
-    from ._controls import _slider, observe, snap_to_step
-    from .interactor import PointDragger
+    from course_lib.widgets._controls import _slider, observe, snap_to_step
+    from course_lib.widgets.interactor import PointDragger
 
     sa = _slider(A_SLIDER, state.a)
     sv = _slider(V_SLIDER, state.v)
     demo.controls.update(a=sa, t=sv)
     observe(demo, sa, lambda ch: state.set_a(snap_to_step(A_SLIDER, ch["new"])))
     observe(demo, sv, lambda ch: state.set_t(snap_to_step(V_SLIDER, ch["new"])))
-    from .access import point_controls
+    from course_lib.widgets.access import point_controls
 
     demo.build_widgets([sa, sv, point_controls(demo)])
     demo.dragger = PointDragger(

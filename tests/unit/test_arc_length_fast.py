@@ -1,4 +1,4 @@
-"""Arc length of whole Bézier curves (``course_lib._bezier_length``): the fixed-grid fast
+"""Arc length of whole Bézier curves (``course_lib.geometry.arc_length``): the fixed-grid fast
 path, its certificate, and the fallbacks it hands the hard segments to.
 
 References are independent of the code under test: mpmath's tanh-sinh quadrature at 40
@@ -17,10 +17,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-import course_lib._bezier_length as bl
-from course_lib.bezier import subdivide
-from course_lib.curve import PiecewiseBezier
-from course_lib.differential_geometry import (
+import course_lib.geometry.arc_length as bl
+from course_lib.curves.bezier import subdivide
+from course_lib.curves.curve import PiecewiseBezier
+from course_lib.geometry.differential_geometry import (
     _integrate_speed,
     arc_length,
     cumulative_arc_length,
@@ -163,7 +163,7 @@ def test_two_agreeing_rules_are_not_enough():
 def test_robust_path_alone_matches_mpmath(monkeypatch):
     """The graded mesh certifies every case here; the adaptive bisection behind it is
     checked on its own by forcing the graded mesh to refuse."""
-    import course_lib.differential_geometry as dg
+    import course_lib.geometry.differential_geometry as dg
 
     def no_bisection(*args, **kwargs):
         raise AssertionError("the graded mesh should have certified this segment")

@@ -1,4 +1,4 @@
-"""Tests of course_lib.bezier against independent derivations.
+"""Tests of course_lib.curves.bezier against independent derivations.
 
 References used here: the Bernstein definition evaluated with exact rationals
 (fractions.Fraction), de Casteljau's algorithm (a different algorithm from the
@@ -16,7 +16,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from course_lib import bezier
+from course_lib.curves import bezier
 
 # Dyadic data keeps every intermediate value exact in binary floating point.
 V = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.5], [4.0, 0.5]])
@@ -145,7 +145,7 @@ def test_bad_input(call, exc, match):
 
 
 def test_hodographs_of_stacked_polygons_match_one_by_one():
-    from course_lib.bezier import _derivative_points
+    from course_lib.curves.bezier import _derivative_points
 
     W = V[::-1] * 0.5 + 1.0
     stacked = np.stack([V, W])

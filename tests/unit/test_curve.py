@@ -1,6 +1,6 @@
-"""Tests of the central curve type, course_lib.curve.PiecewiseBezier.
+"""Tests of the central curve type, course_lib.curves.curve.PiecewiseBezier.
 
-Independent references: per-segment Bézier evaluation (course_lib.bezier, tested
+Independent references: per-segment Bézier evaluation (course_lib.curves.bezier, tested
 separately against exact rationals), central finite differences for global
 derivatives, and the chain rule d/dt = (1/h) d/du written out by hand.
 """
@@ -12,7 +12,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from course_lib import PiecewiseBezier, bezier
+from course_lib import PiecewiseBezier
+from course_lib.curves import bezier
 
 SEG_A = np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 1.0], [3.0, 0.0]])
 SEG_B = np.array([[3.0, 0.0], [4.0, -1.0], [5.0, 0.5]])  # quadratic: mixed degrees

@@ -4,7 +4,7 @@
 Horner's rule for hodographs of degree <= ``_TAYLOR_MAX_DEGREE`` and the Bernstein
 form above.  Independent references here: exact rational de Casteljau on the exact
 hodograph (``fractions.Fraction``), the Bernstein form (``_eval_located``, and
-``course_lib.bezier.evaluate``), the chain rule written out by hand, and the
+``course_lib.curves.bezier.evaluate``), the chain rule written out by hand, and the
 textbook Bernstein formula for ``_bernstein``.
 """
 
@@ -19,9 +19,10 @@ import pytest
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
-from course_lib import PiecewiseBezier, bezier
-from course_lib import curve as curve_module
-from course_lib.bezier import _bernstein
+from course_lib import PiecewiseBezier
+from course_lib.curves import bezier
+from course_lib.curves import curve as curve_module
+from course_lib.curves.bezier import _bernstein
 
 TOP = curve_module._TAYLOR_MAX_DEGREE
 

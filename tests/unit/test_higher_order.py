@@ -1,9 +1,9 @@
-"""Tests of course_lib.higher_order (seed 001 Example 2.1, G^n Beta-splines).
+"""Tests of course_lib.constructions.beta_splines (seed 001 Example 2.1, G^n Beta-splines).
 
 References: the explicit Beta-constraints of seed 000 eq. (7.1)-(7.4) at every joint;
 scipy.interpolate.BSpline for β1 = 1, β_{>1} = 0; an exact sympy solve of the same
 linear system at rational β's; the inverse-function derivatives (1/β1, -β2/β1³,
-(3β2² - β1β3)/β1⁵) for the seed's eq. (2.10); course_lib.continuity for "exactly G^n".
+(3β2² - β1β3)/β1⁵) for the seed's eq. (2.10); course_lib.geometry.continuity for "exactly G^n".
 """
 
 from __future__ import annotations
@@ -15,7 +15,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.interpolate import BSpline
 
-from course_lib.higher_order import (
+from course_lib.constructions.beta_splines import (
     BetaSplineBasis,
     _solve,
     beta_spline,

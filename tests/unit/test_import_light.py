@@ -7,18 +7,18 @@ import sys
 
 MODULES = [
     "course_lib",
-    "course_lib.parametrization",
-    "course_lib.differential_geometry",
-    "course_lib.reparametrization",
-    "course_lib.beta_constraints",
-    "course_lib.continuity",
+    "course_lib.curves.parametrization",
+    "course_lib.geometry.differential_geometry",
+    "course_lib.geometry.reparametrization",
+    "course_lib.geometry.beta_constraints",
+    "course_lib.geometry.continuity",
 ]
 HEAVY = ["sympy", "matplotlib", "ipywidgets", "scipy"]
 # The numeric paths must stay light at call time too (numeric Beta-constraints, reports).
 USE = """
 import numpy as np
 from course_lib import PiecewiseBezier
-from course_lib import beta_constraints as bc, continuity as co, differential_geometry as dg
+from course_lib.geometry import beta_constraints as bc, continuity as co, differential_geometry as dg
 c = PiecewiseBezier([np.array([[0, 0], [1, 1], [2, 0.]]), np.array([[2, 0], [3, -1], [4, 0.]])])
 bc.solve_shape_parameters(bc.apply_beta_constraints(np.eye(2), [2.0, 1.0]), np.eye(2))
 str(co.curve_continuity(c)[0])

@@ -1,4 +1,4 @@
-"""Tests of course_lib.outlines: glyphs and SVG path data read into PiecewiseBezier contours.
+"""Tests of course_lib.constructions.outlines: glyphs and SVG path data read into PiecewiseBezier contours.
 
 Independent references: fontTools' own pens (its decomposition of TrueType quadratic
 runs and of composite glyphs, its exact bounding boxes), matplotlib's SVG path writer,
@@ -16,8 +16,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from course_lib import PiecewiseBezier
-from course_lib.continuity import curve_continuity, joint_continuity
-from course_lib.outlines import (
+from course_lib.geometry.continuity import curve_continuity, joint_continuity
+from course_lib.constructions.outlines import (
     KINDS,
     Outline,
     bundled_fonts,
@@ -80,7 +80,7 @@ def _pen_segments(font: str, name: str) -> list[list[np.ndarray]]:
             if np.any(self.cur != self.start):
                 self._add(self.start)
 
-    from course_lib.outlines import _load_font, _resolve_font
+    from course_lib.constructions.outlines import _load_font, _resolve_font
 
     tt = _load_font(str(_resolve_font(font)))[0]
     gs = tt.getGlyphSet()
@@ -110,7 +110,7 @@ def test_on_and_off_curve_points_agree_with_fonttools_recording_pen(font, name):
     control points, and its on-curve points our non-implied joints, in order."""
     from fontTools.pens.recordingPen import DecomposingRecordingPen
 
-    from course_lib.outlines import _load_font, _resolve_font
+    from course_lib.constructions.outlines import _load_font, _resolve_font
 
     gs = _load_font(str(_resolve_font(font)))[0].getGlyphSet()
     pen = DecomposingRecordingPen(gs)
@@ -148,7 +148,7 @@ def _open(P: np.ndarray) -> np.ndarray:
 
 
 def _upem(font: str) -> float:
-    from course_lib.outlines import _load_font, _resolve_font
+    from course_lib.constructions.outlines import _load_font, _resolve_font
 
     return _load_font(str(_resolve_font(font)))[3]
 
@@ -176,7 +176,7 @@ def _exact_bounds(outline: Outline) -> np.ndarray:
 def test_bounding_boxes_agree_with_fonttools_bounds_pen(font, name):
     from fontTools.pens.boundsPen import BoundsPen
 
-    from course_lib.outlines import _load_font, _resolve_font
+    from course_lib.constructions.outlines import _load_font, _resolve_font
 
     tt = _load_font(str(_resolve_font(font)))[0]
     gs = tt.getGlyphSet()

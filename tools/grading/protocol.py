@@ -24,7 +24,7 @@ clamped fraction and a note; it never raises for anything the student did.
 The transport is a function ``request dict -> response text``: :class:`LocalStudent` answers
 in-process from a namespace (the feedback checks' equivalence tests use it), the grader's
 kernel transport answers from a sandboxed kernel.  Both go through the same JSON encoding of
-``course_lib._probe``, so a value reaches a hidden test in exactly the same form either way.
+``course_lib.homework.protocol``, so a value reaches a hidden test in exactly the same form either way.
 """
 
 from __future__ import annotations
@@ -38,7 +38,7 @@ from typing import Any
 
 import numpy as np
 
-from course_lib import _probe
+from course_lib.homework import protocol as _probe
 
 MAX_RESPONSE_BYTES = 4_000_000
 MAX_DEPTH = 10
@@ -92,9 +92,9 @@ def raised_note(message: str) -> str:
     ``ValueError(f"{inputs}")`` and read the hidden cases' inputs in its feedback -- so it is
     dropped.  Kept are the course's own sentences whose every part the grader verifies: the
     own-work sentence for an implementation that really is that question's exercise
-    (:mod:`course_lib.own_work`), and the probe's note on endless recursion.
+    (:mod:`course_lib.homework.own_work`), and the probe's note on endless recursion.
     """
-    from course_lib import own_work  # the registry the sentence must name
+    from course_lib.homework import own_work  # the registry the sentence must name
 
     text = str(message).strip()
     if text == _RECURSION:
@@ -115,7 +115,7 @@ class StudentRaised(AssertionError):
     """The student's function raised an exception (its message is the note).
 
     An ``AssertionError`` so that a hidden test scoring case by case
-    (``course_lib.answers.partial_credit``) charges it to that case only.
+    (``course_lib.homework.answers.partial_credit``) charges it to that case only.
     """
 
     def __str__(self) -> str:
@@ -137,7 +137,7 @@ class ChannelBroken(Exception):
 
 
 def decode_value(obj: Any, depth: int = 0, student: Student | None = None) -> Any:
-    """Validate and decode one encoded value (``course_lib._probe.decode``, strict)."""
+    """Validate and decode one encoded value (``course_lib.homework.protocol.decode``, strict)."""
     try:
         return _probe.decode(obj, depth)
     except _probe.Malformed as exc:
@@ -299,7 +299,7 @@ class LocalStudent(Student):
     """
 
     def __init__(self, namespace: dict) -> None:
-        from course_lib import _probe
+        from course_lib.homework import protocol as _probe
 
         def transport(request: dict) -> str:
             response = _probe.handle(json.loads(json.dumps(request)), namespace)
