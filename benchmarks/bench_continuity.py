@@ -52,8 +52,8 @@ def _curve():
 def joint_report(curve, j: int, max_order: int):
     """What ``course_lib.widgets._core.joint_report`` does on every frame (without importing
     the widget stack): build the two-segment curve around joint ``j`` and report it."""
-    from course_lib.geometry.continuity import curve_continuity
     from course_lib.curves.curve import PiecewiseBezier
+    from course_lib.geometry.continuity import curve_continuity
 
     k = curve.knots
     pair = PiecewiseBezier(curve.segments[j : j + 2], k[j : j + 3] if curve.has_knots else None)

@@ -79,8 +79,8 @@ def _course_static_build() -> None:
             if "static" in params:
                 new = wrapped.setdefault(id(obj), force_static(obj))
                 setattr(mod, name, new)
-        if hasattr(mod, "_widgets_available"):  # the default of static=None
-            mod._widgets_available = lambda: False
+        if hasattr(mod, "widgets_available"):  # the default of static=None
+            mod.widgets_available = lambda: False
 
 
 _course_static_build()

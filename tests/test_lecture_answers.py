@@ -38,8 +38,8 @@ def quiz_questions() -> set:
 
 
 def _quartic_c1_not_c2():
-    from course_lib.geometry.continuity import curve_continuity
     from course_lib.constructions.beta_splines import quartic_beta_spline
+    from course_lib.geometry.continuity import curve_continuity
 
     P = np.array([[0, 0], [1, 2.4], [3, 3], [4, 0.6], [6, 0.2], [7, 2.6], [9, 3], [10, 0.4]])
     reps = curve_continuity(quartic_beta_spline(P, 1, 100, 0), max_order=3)
@@ -175,8 +175,8 @@ def _curvature_jump_by_hand():
 
 
 def _g2_joints_of_eight_by_continuity_report():
-    from course_lib.geometry.continuity import curve_continuity, joint_continuity
     from course_lib.constructions.outlines import glyph_outline
+    from course_lib.geometry.continuity import curve_continuity, joint_continuity
 
     g2 = 0
     for contour in glyph_outline("8").contours:  # closed: the closing joint counts too

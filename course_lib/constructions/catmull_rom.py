@@ -168,4 +168,4 @@ def catmull_rom(V: np.ndarray, beta1: float | np.ndarray = 1.0) -> PiecewiseBezi
     segs[:, 2] = P[2:-1] - Dm[1:] / 3
     segs[:, 3] = P[2:-1]
     info = {"beta1": b[1:-1].copy(), "beta1_vertices": b, "tangents_right": Dp}
-    return PiecewiseBezier._fast(list(segs), info=info)
+    return PiecewiseBezier.from_trusted_segments(list(segs), info=info)

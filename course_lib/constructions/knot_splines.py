@@ -125,4 +125,4 @@ def g1_knot_spline(d_points: np.ndarray, knots: np.ndarray) -> PiecewiseBezier:
     segs = [P[3 * i : 3 * i + 4] for i in range(L)]
     h = np.diff(t)
     info = {"beta1": h[1:] / h[:-1], "junction_points": P[3 : 3 * L : 3].copy(), "d_points": D}
-    return PiecewiseBezier._fast(segs, t, info)
+    return PiecewiseBezier.from_trusted_segments(segs, t, info)

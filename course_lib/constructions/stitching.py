@@ -158,7 +158,7 @@ def g1_stitch(V: np.ndarray, beta1: float, W_rest: np.ndarray) -> PiecewiseBezie
     W = g1_stitch_points(P, beta1)
     R = _rest(W_rest, P.shape[0] - 2, P.shape[1], "G1 fixed W_0, W_1")
     info = {"beta1": np.array([float(beta1)]), "W01": W}
-    return PiecewiseBezier._fast([P, np.vstack([W, R])], info=info)
+    return PiecewiseBezier.from_trusted_segments([P, np.vstack([W, R])], info=info)
 
 
 def g2_stitch(
@@ -188,7 +188,7 @@ def g2_stitch(
         g = (d - 1) * (1 + float(beta1)) / den
         info["gamma"] = g
         info["T"] = P[-2] + float(beta1) ** 2 * g * (P[-2] - P[-3])
-    return PiecewiseBezier._fast([P, np.vstack([W, R])], info=info)
+    return PiecewiseBezier.from_trusted_segments([P, np.vstack([W, R])], info=info)
 
 
 def farin_boehm_gamma(beta1: float, beta2: float, d: int = 3, *, joint: int | None = None) -> float:
@@ -367,4 +367,4 @@ def gn_stitch(V: np.ndarray, betas: object, W_rest: np.ndarray | None = None) ->
     info: dict[str, object] = {f"beta{i + 1}": np.array([x]) for i, x in enumerate(b)}
     info["betas"] = b
     info["W_fixed"] = W
-    return PiecewiseBezier._fast([P, np.vstack([W, R])], info=info)
+    return PiecewiseBezier.from_trusted_segments([P, np.vstack([W, R])], info=info)

@@ -33,7 +33,7 @@ from math import factorial
 
 import numpy as np
 
-from course_lib.curves.bezier import _bernstein
+from course_lib.curves.bezier import bernstein_matrix
 from course_lib.validation import (
     as_parameter_array,
     check_finite_scalar,
@@ -131,8 +131,8 @@ class BezierPatch:
         Q = self.derivative_net(nu, nv)
         uu, su = as_parameter_array(u, "u")
         vv, sv = as_parameter_array(v, "v")
-        Bu = _bernstein(Q.shape[0] - 1, uu)
-        Bv = _bernstein(Q.shape[1] - 1, vv)
+        Bu = bernstein_matrix(Q.shape[0] - 1, uu)
+        Bv = bernstein_matrix(Q.shape[1] - 1, vv)
         if grid:
             out = np.einsum("ai,ijd,bj->abd", Bu, Q, Bv)
             if su:

@@ -21,9 +21,13 @@ from course_lib.validation import as_parameter_array, as_points, check_finite_sc
 
 __all__ = [
     "bernstein",
+    "bernstein_matrix",
     "de_casteljau",
     "derivative_control_points",
+    "derivative_points",
     "elevate_degree",
+    "end_derivative_matrix",
+    "end_derivative_points",
     "end_derivatives",
     "evaluate",
     "subdivide",
@@ -37,8 +41,9 @@ def _binomials(d: int) -> np.ndarray:
     return out
 
 
-def _bernstein(d: int, u: np.ndarray) -> np.ndarray:
-    """Bernstein values without checks; ``u`` 1-d, returns ``(len(u), d + 1)``.
+def bernstein_matrix(d: int, u: np.ndarray) -> np.ndarray:
+    """Bernstein values without checks (the fast path of :func:`bernstein`); ``u`` 1-d float,
+    returns ``(len(u), d + 1)``.
 
     The result is a transposed view of a ``(d + 1, len(u))`` array: each basis
     function is built in one contiguous row, which is several times faster than
@@ -85,11 +90,11 @@ def bernstein(d: int, u: float | np.ndarray) -> np.ndarray:
     """
     d = check_integer(d, "d", minimum=0)
     uu, scalar = as_parameter_array(u, "u")
-    out = np.ascontiguousarray(_bernstein(d, uu))
+    out = np.ascontiguousarray(bernstein_matrix(d, uu))
     return out[0] if scalar else out
 
 
-def _derivative_points(P: np.ndarray, k: int) -> np.ndarray:
+def derivative_points(P: np.ndarray, k: int) -> np.ndarray:
     """k-th hodograph control points without checks.
 
     ``P`` has shape ``(d + 1, dim)`` or, for several polygons of one degree at once,
@@ -124,12 +129,12 @@ def derivative_control_points(control_points: np.ndarray, k: int = 1) -> np.ndar
     """
     P = as_points(control_points, "control_points", min_points=1)
     k = check_integer(k, "k", minimum=0)
-    return _derivative_points(P, k)
+    return derivative_points(P, k)
 
 
 def _evaluate(P: np.ndarray, u: np.ndarray, n: int = 0) -> np.ndarray:
-    Q = _derivative_points(P, n) if n else P
-    return _bernstein(Q.shape[0] - 1, u) @ Q
+    Q = derivative_points(P, n) if n else P
+    return bernstein_matrix(Q.shape[0] - 1, u) @ Q
 
 
 def evaluate(control_points: np.ndarray, u: float | np.ndarray, n: int = 0) -> np.ndarray:
@@ -171,17 +176,42 @@ def end_derivatives(control_points: np.ndarray, n: int, end: int = 1) -> np.ndar
     n = check_integer(n, "n", minimum=0)
     if end not in (0, 1):
         raise ValueError(f"end must be 0 (start, u = 0) or 1 (end, u = 1); got {end!r}")
-    return _end_derivatives(P, n, end)
+    return end_derivative_points(P, n, end)
 
 
-def _end_derivatives(P: np.ndarray, n: int, end: int) -> np.ndarray:
+def end_derivative_points(P: np.ndarray, n: int, end: int) -> np.ndarray:
+    """:func:`end_derivatives` without checks: ``P`` a float ``(d + 1, dim)`` array."""
     out = np.zeros((n + 1, P.shape[1]))
     for k in range(n + 1):
-        Q = _derivative_points(P, k)
+        Q = derivative_points(P, k)
         out[k] = Q[-1] if end == 1 else Q[0]
         if k > P.shape[0] - 1:
             out[k] = 0.0
     return out
+
+
+@lru_cache(maxsize=128)
+def end_derivative_matrix(d: int, n: int, end: int) -> np.ndarray:
+    """The matrix of end derivatives: ``M @ P`` holds the derivatives of orders ``0..n`` at
+    ``u = end`` of the degree-``d`` Bézier curve with control points ``P`` (seed 000 eq.
+    (8.1)-(8.3): ``d!/(d-k)! Δ^k P_0`` at ``u = 0``, ``d!/(d-k)! ∇^k P_d`` at ``u = 1``).
+
+    Returns
+    -------
+    ndarray of shape (n + 1, d + 1), read-only (cached)
+        Row ``k`` is zero for ``k > d``.  ``P`` may be a stack ``(S, d + 1, dim)``:
+        ``M @ P`` is then ``(S, n + 1, dim)``.
+    """
+    if end not in (0, 1):
+        raise ValueError(f"end must be 0 (start, u = 0) or 1 (end, u = 1); got {end!r}")
+    E = np.zeros((n + 1, d + 1))
+    fac = 1.0
+    for k in range(min(n, d) + 1):
+        for j in range(k + 1):
+            E[k, j if end == 0 else d - k + j] = fac * (-1) ** (k - j) * comb(k, j)
+        fac *= d - k
+    E.setflags(write=False)
+    return E
 
 
 def elevate_degree(control_points: np.ndarray, times: int = 1) -> np.ndarray:

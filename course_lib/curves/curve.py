@@ -31,7 +31,7 @@ from types import MappingProxyType
 
 import numpy as np
 
-from course_lib.curves.bezier import _bernstein, _derivative_points, _end_derivatives
+from course_lib.curves.bezier import bernstein_matrix, derivative_points, end_derivative_points
 from course_lib.validation import (
     as_parameter_array,
     as_points,
@@ -252,8 +252,9 @@ class PiecewiseBezier:
         self._cache: dict = {}
 
     @classmethod
-    def _fast(cls, segments, knots=None, info=None) -> PiecewiseBezier:
-        """Construct without validation (internal use by trusted constructions)."""
+    def from_trusted_segments(cls, segments, knots=None, info=None) -> PiecewiseBezier:
+        """Construct without validation: for constructions whose segments are finite float arrays
+        of shape ``(d + 1, dim)`` by construction (a list, or one ``(S, d + 1, dim)`` array)."""
         obj = cls.__new__(cls)
         has = knots is not None
         k = np.asarray(knots, float) if has else np.arange(len(segments) + 1, dtype=float)
@@ -393,8 +394,8 @@ class PiecewiseBezier:
         i = self._check_segment(i)
         n = check_integer(n, "n", minimum=0)
         uu, scalar = as_parameter_array(u, "u")
-        Q = _derivative_points(self.segments[i], n)
-        out = _bernstein(Q.shape[0] - 1, uu) @ Q
+        Q = derivative_points(self.segments[i], n)
+        out = bernstein_matrix(Q.shape[0] - 1, uu) @ Q
         return out[0] if scalar else out
 
     def end_derivatives(self, i: int, end: int, n: int) -> np.ndarray:
@@ -409,15 +410,30 @@ class PiecewiseBezier:
         n = check_integer(n, "n", minimum=0)
         if end not in (0, 1):
             raise ValueError(f"end must be 0 (u = 0) or 1 (u = 1); got {end!r}")
-        return _end_derivatives(self.segments[i], n, end)
+        return end_derivative_points(self.segments[i], n, end)
 
-    def _stacks(self, n: int):
-        """Per degree: (segment -> row map, stacked n-th hodograph points)."""
+    @property
+    def uniform_array(self) -> np.ndarray | None:
+        """All control points as one read-only ``(S, d + 1, dim)`` array when every segment has
+        the same degree ``d``, else None (the fast paths of the analysis use it)."""
+        return self._array
+
+    def segments_by_degree(self, n: int = 0) -> list[tuple[int, np.ndarray, np.ndarray, np.ndarray]]:
+        """The segments grouped by degree, with the control points of their ``n``-th hodographs.
+
+        Returns
+        -------
+        list of (degree, indices, rows, points)
+            One entry per degree present: the segment ``indices`` of that degree, ``rows``
+            (length ``n_segments``: the row of each segment in ``points``, -1 for segments of
+            other degrees) and ``points`` of shape ``(len(indices), degree - n + 1, dim)``
+            (seed 000 eq. (8)).  Cached per ``n``; the arrays must not be modified.
+        """
         key = ("stack", n)
         if key not in self._cache:
             if self._array is not None:
                 S = self.n_segments
-                stack = _derivative_points(self._array, n)
+                stack = derivative_points(self._array, n)
                 self._cache[key] = [(self._degrees[0], np.arange(S), np.arange(S), stack)]
                 return self._cache[key]
             groups: dict[int, list[int]] = {}
@@ -427,7 +443,7 @@ class PiecewiseBezier:
             for d, idx in groups.items():
                 rows = np.full(self.n_segments, -1)
                 rows[idx] = np.arange(len(idx))
-                stack = np.stack([_derivative_points(self._segments[i], n) for i in idx])
+                stack = np.stack([derivative_points(self._segments[i], n) for i in idx])
                 out.append((d, np.array(idx), rows, stack))
             self._cache[key] = out
         return self._cache[key]
@@ -650,16 +666,16 @@ class PiecewiseBezier:
         return self._cache["halves"]
 
     def _eval_located(self, idx: np.ndarray, u: np.ndarray, n: int) -> np.ndarray:
-        stacks = self._stacks(n)
+        stacks = self.segments_by_degree(n)
         if len(stacks) == 1:
             _, _, rows, stack = stacks[0]
-            B = _bernstein(stack.shape[1] - 1, u)
+            B = bernstein_matrix(stack.shape[1] - 1, u)
             return np.einsum("mk,mkd->md", B, stack[rows[idx]])
         out = np.empty((u.size, self.dim))
         for _, _, rows, stack in stacks:
             r = rows[idx]
             mask = r >= 0
-            B = _bernstein(stack.shape[1] - 1, u[mask])
+            B = bernstein_matrix(stack.shape[1] - 1, u[mask])
             out[mask] = np.einsum("mk,mkd->md", B, stack[r[mask]])
         return out
 
@@ -711,13 +727,13 @@ class PiecewiseBezier:
                 f"offset must be a finite vector of length {self.dim}; got shape {b.shape}"
             )
         if self._array is not None:
-            return PiecewiseBezier._fast(
+            return PiecewiseBezier.from_trusted_segments(
                 self._array @ A.T + b, self._knots if self.has_knots else None, self._info
             )
         segs = [s @ A.T + b for s in self._segments]
-        return PiecewiseBezier._fast(segs, self._knots if self.has_knots else None, self._info)
+        return PiecewiseBezier.from_trusted_segments(segs, self._knots if self.has_knots else None, self._info)
 
     def segment_curve(self, i: int) -> PiecewiseBezier:
         """Segment ``i`` alone, as a one-segment curve."""
         i = self._check_segment(i)
-        return PiecewiseBezier._fast([self.segments[i]])
+        return PiecewiseBezier.from_trusted_segments([self.segments[i]])

@@ -1,4 +1,4 @@
-"""Arc length of whole Bézier segments: a fixed-grid fast path with an a-posteriori check.
+"""The arc-length engine: exact lengths of Bézier segments, quadrature of any curve's speed.
 
 The length of a segment ``q(u)``, ``u`` in ``[0, 1]``, is ``L = int_0^1 |q'(u)| du``
 (seed 004 §19.2); it does not depend on the global parametrization, so the knot
@@ -32,10 +32,21 @@ segment is scaled by powers of two (exact), split at the critical points of its 
 and each piece is integrated on a mesh graded geometrically towards its ends, down to a
 few times below the distance ``v / max|q''|`` of the speed's nearest complex zero; the
 mesh and the mesh halved must agree to :data:`RTOL`.  If they do not, adaptive
-Gauss-Legendre bisection (:func:`course_lib.geometry.differential_geometry._integrate_speed`, to
+Gauss-Legendre bisection (:func:`integrate_speed`, to
 :data:`ROBUST_RTOL`) on the same pieces decides.  On 400 random near-cusps
 (``eps`` from 1e-12 to 1e-1, anywhere in ``[0, 1]`` and just outside) the robust path is
 within 5e-16 of mpmath.
+
+**Any curve** (:func:`integrate_speed`): adaptive Gauss-Legendre of ``|c'|`` on intervals
+(bisection until two levels agree), with the Bézier pieces of a ``PiecewiseBezier`` sent to
+the certified rules above.  **Live pictures** (:func:`segment_arc_lengths`): fixed rules on
+every segment's sampling grid, Bernstein matrices cached.  Every rule comes from one cache,
+:func:`gauss_legendre`.
+
+Why this module is long: it is the one arc-length engine of the course (the certified
+fast path, the robust path, the adaptive quadrature for any curve and the fixed rules of the
+pictures share their rules, constants and certificate); the public functions of
+:mod:`course_lib.geometry.differential_geometry` call it.
 """
 
 from __future__ import annotations
@@ -46,8 +57,10 @@ from math import comb
 
 import numpy as np
 
-from course_lib.curves.bezier import _bernstein
+from course_lib.curves.bezier import bernstein_matrix, derivative_points
+from course_lib.curves.curve import PiecewiseBezier
 from course_lib.homework import own_work
+from course_lib.validation import scaled_norm
 
 __all__ = [
     "FINER_PIECES",
@@ -57,11 +70,18 @@ __all__ = [
     "ROBUST_RTOL",
     "RTOL",
     "SEPARATION",
+    "bezier_curve_length",
+    "bezier_piece_lengths",
+    "breakpoints",
+    "gauss_legendre",
     "hodograph_lengths",
+    "integrate_speed",
     "piece_lengths",
     "robust_hodograph_length",
     "robust_length",
+    "segment_arc_lengths",
     "segment_lengths",
+    "speed_integrals",
 ]
 
 #: Gauss-Legendre nodes per subinterval of both rules.
@@ -91,6 +111,16 @@ _MAX_LEVELS = 60
 _RANGE = (1e-100, 1e100)
 
 
+@lru_cache(maxsize=8)
+def gauss_legendre(order: int) -> tuple[np.ndarray, np.ndarray]:
+    """Gauss-Legendre nodes and weights on ``[-1, 1]`` (read-only, cached): the one rule of the
+    course's quadratures."""
+    x, w = np.polynomial.legendre.leggauss(order)
+    x.setflags(write=False)
+    w.setflags(write=False)
+    return x, w
+
+
 @lru_cache(maxsize=32)
 def _rule(d: int, pieces: int = PIECES) -> tuple[np.ndarray, np.ndarray, float]:
     """Matrix, weights and reach of the fast path for degree ``d >= 2`` (coarse rule on
@@ -108,7 +138,7 @@ def _rule(d: int, pieces: int = PIECES) -> tuple[np.ndarray, np.ndarray, float]:
     reach : float
         Largest distance from a point of ``[0, 1]`` to the nearest node.
     """
-    x, w = np.polynomial.legendre.leggauss(ORDER)
+    x, w = gauss_legendre(ORDER)
     nodes, weights = [], []
     for k in (pieces, 2 * pieces):
         h = 0.5 / k
@@ -122,7 +152,7 @@ def _rule(d: int, pieces: int = PIECES) -> tuple[np.ndarray, np.ndarray, float]:
     W[nodes[0].size : m, 1] = weights[1]
     W[m:, 2] = 1.0
     G = np.zeros((d, m + d - 1))
-    G[:, :m] = d * _bernstein(d - 1, u).T
+    G[:, :m] = d * bernstein_matrix(d - 1, u).T
     for i in range(d - 1):
         G[i, m + i] = -d * (d - 1)
         G[i + 1, m + i] = d * (d - 1)
@@ -349,8 +379,6 @@ def robust_hodograph_length(H: np.ndarray) -> float:
     certified.
     """
     own_work.require("course_lib.geometry.arc_length.robust_hodograph_length")
-    from course_lib.geometry.differential_geometry import _integrate_speed
-
     d = H.shape[0]
     if not np.any(H):
         return 0.0
@@ -359,15 +387,10 @@ def robust_hodograph_length(H: np.ndarray) -> float:
     if total is None:
 
         def speed(u: np.ndarray) -> np.ndarray:
-            return _norms_1((_bernstein(d - 1, u) @ H).T)
+            return _norms_1((bernstein_matrix(d - 1, u) @ H).T)
 
-        total = float(_integrate_speed(None, grid[:-1], grid[1:], ROBUST_RTOL, speed).sum())
+        total = float(integrate_speed(None, grid[:-1], grid[1:], ROBUST_RTOL, speed).sum())
     return d * total
-
-
-@lru_cache(maxsize=1)
-def _gauss_legendre() -> tuple[np.ndarray, np.ndarray]:
-    return np.polynomial.legendre.leggauss(GRADED_ORDER)
 
 
 def _levels(width: float, v: float, M: float) -> int:
@@ -389,7 +412,7 @@ def _graded(H: np.ndarray, grid: np.ndarray) -> float | None:
     nearest complex zero); Gauss-Legendre on the mesh and on the mesh halved, in one
     evaluation.  None when the two disagree by more than :data:`RTOL`."""
     k = H.shape[0] - 1
-    speeds = np.sqrt(np.einsum("md,md->m", *(2 * [_bernstein(k, grid) @ H])))
+    speeds = np.sqrt(np.einsum("md,md->m", *(2 * [bernstein_matrix(k, grid) @ H])))
     M = k * float(np.sqrt(np.einsum("md,md->m", *(2 * [np.diff(H, axis=0)]))).sum()) if k else 0.0
     edges = []
     g, sp = grid.tolist(), speeds.tolist()
@@ -403,12 +426,170 @@ def _graded(H: np.ndarray, grid: np.ndarray) -> float | None:
     mid = 0.5 * (lo + hi)
     A = np.concatenate([lo, lo, mid])
     B = np.concatenate([hi, mid, hi])
-    x, wts = _gauss_legendre()
+    x, wts = gauss_legendre(GRADED_ORDER)
     half = 0.5 * (B - A)
     nodes = (0.5 * (A + B))[:, None] + half[:, None] * x
-    X = _bernstein(k, nodes.ravel()) @ H
+    X = bernstein_matrix(k, nodes.ravel()) @ H
     v = np.sqrt(np.einsum("md,md->m", X, X)).reshape(nodes.shape)
     vals = half * (v @ wts)
     n = lo.size
     coarse, fine = float(vals[:n].sum()), float(vals[n:].sum())
     return fine if abs(fine - coarse) <= RTOL * fine else None
+
+
+# ------------------------------------------------- any curve: adaptive quadrature of the speed
+def breakpoints(curve) -> np.ndarray:
+    """Parameters where the curve may fail to be smooth: knots (if any) and the domain ends."""
+    a, b = curve.domain
+    bp = getattr(curve, "breakpoints", None)
+    if bp is None:
+        bp = getattr(curve, "knots", None)
+    if bp is None:
+        return np.array([a, b], dtype=float)
+    bp = np.asarray(bp, dtype=float)
+    return np.unique(np.concatenate([[a, b], bp[(bp > a) & (bp < b)]]))
+
+
+def speed_integrals(curve, a: np.ndarray, b: np.ndarray, order: int = 20, speed=None) -> np.ndarray:
+    """Gauss-Legendre approximation of int_a^b |c'| on each interval (vectorized).
+
+    ``speed``, if given, replaces ``|c'|``: a function of a 1-d parameter array."""
+    x, w = gauss_legendre(order)
+    half = 0.5 * (b - a)
+    nodes = (0.5 * (a + b))[:, None] + half[:, None] * x[None, :]
+    if speed is not None:
+        v = speed(nodes.ravel()).reshape(nodes.shape)
+    else:
+        v = scaled_norm(curve.evaluate(nodes.ravel(), 1), axis=-1).reshape(nodes.shape)
+    return half * (v @ w)
+
+
+def integrate_speed(
+    curve, a: np.ndarray, b: np.ndarray, rtol: float = 1e-13, speed=None
+) -> np.ndarray:
+    """Adaptive Gauss-Legendre (20 nodes, bisection) of |c'| on each ``[a_i, b_i]``.
+
+    An interval is accepted when its 20-node value and the sum of the values on
+    its two halves agree to ``rtol`` (relative; the finer value is kept) -- for the
+    smooth speeds of polynomial and analytic curves after zero or one bisection.
+    ``speed`` (optional) replaces ``|c'|``, as in :func:`speed_integrals`.
+
+    For a :class:`~course_lib.curves.curve.PiecewiseBezier` and intervals that each lie in one
+    segment (the callers split at the knots), every interval is a Bézier
+    piece measured by :func:`piece_lengths` instead: the same
+    certified rules as :func:`bezier_curve_length`, accurate near cusps too.
+    """
+    own_work.require("course_lib.geometry.arc_length.integrate_speed")
+    a = np.asarray(a, dtype=float)
+    b = np.asarray(b, dtype=float)
+    if speed is None and type(curve) is PiecewiseBezier and a.size:
+        pieces = bezier_piece_lengths(curve, a, b)
+        if pieces is not None:
+            return pieces
+    total = np.zeros(a.size)
+    if a.size == 0:
+        return total
+    owner = np.arange(a.size)
+    k = a.size
+    mid = 0.5 * (a + b)
+    # one vectorized evaluation per level: the whole intervals (first level only) and halves
+    first = speed_integrals(curve, np.concatenate([a, a, mid]), np.concatenate([b, mid, b]), speed=speed)
+    whole, left, right = first[:k], first[k : 2 * k], first[2 * k :]
+    scale = max(float(np.abs(whole).sum()), 1e-300)
+    for depth in range(60):
+        if depth:
+            k = a.size
+            mid = 0.5 * (a + b)
+            halves = speed_integrals(curve, np.concatenate([a, mid]), np.concatenate([mid, b]), speed=speed)
+            left, right = halves[:k], halves[k:]
+        both = left + right
+        err = np.abs(both - whole)
+        ok = (err <= rtol * np.abs(both)) | (err <= 1e-15 * scale)
+        if depth == 59 or a.size > 20000:  # give up refining (e.g. a cusp): keep the best value
+            ok[:] = True
+        np.add.at(total, owner[ok], both[ok])
+        if np.all(ok):
+            break
+        bad = ~ok
+        a = np.concatenate([a[bad], mid[bad]])
+        b = np.concatenate([mid[bad], b[bad]])
+        whole = np.concatenate([left[bad], right[bad]])
+        owner = np.concatenate([owner[bad], owner[bad]])
+    return total
+
+
+def bezier_piece_lengths(curve: PiecewiseBezier, a: np.ndarray, b: np.ndarray) -> np.ndarray | None:
+    """Lengths of ``curve`` on ``[a_i, b_i]`` as Bézier pieces, or None unless each interval
+    lies in one segment."""
+    k = curve.knots
+    last = k.size - 2
+    seg = np.clip(np.searchsorted(k, a, side="right") - 1, 0, last)
+    if np.any(np.clip(np.searchsorted(k, b, side="left") - 1, 0, last) > seg):
+        return None
+    h = k[seg + 1] - k[seg]
+    u0 = np.clip((a - k[seg]) / h, 0.0, 1.0)
+    u1 = np.clip((b - k[seg]) / h, 0.0, 1.0)
+    u0[a <= k[seg]] = 0.0  # exact ends: a whole segment is measured exactly as arc_length does
+    u1[b >= k[seg + 1]] = 1.0
+    if curve.uniform_array is not None:
+        return piece_lengths(curve.uniform_array[seg], u0, u1)
+    degrees = np.array(curve.degrees)[seg]
+    out = np.empty(a.size)
+    for d in np.unique(degrees):  # one vectorized call per degree present
+        m = degrees == d
+        P = np.stack([curve.segments[i] for i in seg[m].tolist()])
+        out[m] = piece_lengths(P, u0[m], u1[m])
+    return out
+
+
+# ------------------------------------------------------- whole curves and live pictures
+def bezier_curve_length(curve: PiecewiseBezier) -> float:
+    """Length of a whole :class:`~course_lib.curves.curve.PiecewiseBezier`: the sum of its segment
+    lengths (each independent of the knots), one vectorized call per degree."""
+    arr = curve.uniform_array
+    if arr is not None:
+        if arr.shape[0] == 1 and arr.shape[1] > 2:
+            return segment_length(arr[0])
+        return float(segment_lengths(arr).sum())
+    return float(sum(segment_lengths(stack).sum() for _, _, _, stack in curve.segments_by_degree(0)))
+
+
+@lru_cache(maxsize=32)
+def _gauss_bernstein(degree: int, breaks: tuple, order: int) -> tuple[np.ndarray, np.ndarray]:
+    """Bernstein matrix at the Gauss-Legendre nodes of every ``[breaks[j], breaks[j+1]]``
+    and the matching weights (``half-length * w``), both flattened interval by interval."""
+    x, w = gauss_legendre(order)
+    br = np.asarray(breaks)
+    half = 0.5 * np.diff(br)
+    nodes = (0.5 * (br[:-1] + br[1:]))[:, None] + half[:, None] * x[None, :]
+    B = np.array(bernstein_matrix(degree, nodes.ravel()), dtype=float)
+    W = (half[:, None] * w[None, :]).ravel()
+    B.setflags(write=False)
+    W.setflags(write=False)
+    return B, W
+
+
+def segment_arc_lengths(curve, per_segment: int, idx: np.ndarray, order: int = 16):
+    """Arc length from the start of the curve at the local samples ``idx`` of every
+    segment's grid, shape ``(S, len(idx))``, or None if the curve is not a PiecewiseBezier
+    of one degree (then use :func:`course_lib.geometry.differential_geometry.cumulative_arc_length`).
+    For live pictures: the segments' local grids of :mod:`course_lib.geometry.sampling`.
+
+    ``idx`` must start with 0 and end with ``per_segment - 1``.  Each piece between
+    consecutive samples is a fixed ``order``-node Gauss-Legendre sum of the speed
+    ``|dq/du|`` (``ds = |dq/du| du``), with the Bernstein matrix at the nodes cached: the
+    nodes are the same local parameters on every frame.  On the smooth speeds of regular
+    polynomial pieces this agrees with the adaptive quadrature of ``cumulative_arc_length``
+    to about 1e-12 relative (tests/unit/test_plotting.py); meant for live pictures.
+    """
+    if curve.uniform_array is None:
+        return None
+    d = curve.degrees[0]
+    u = np.linspace(0.0, 1.0, per_segment)[np.asarray(idx)]
+    B, W = _gauss_bernstein(d - 1, tuple(u.tolist()), order)
+    Q = derivative_points(curve.uniform_array, 1)  # hodograph points (S, d, dim)
+    speed = np.linalg.norm(np.matmul(B, Q), axis=-1)  # (S, J * order)
+    pieces = (speed * W).reshape(speed.shape[0], -1, order).sum(axis=-1)  # (S, J)
+    within = np.concatenate([np.zeros((pieces.shape[0], 1)), np.cumsum(pieces, axis=1)], axis=1)
+    start = np.concatenate([[0.0], np.cumsum(within[:-1, -1])])
+    return within + start[:, None]

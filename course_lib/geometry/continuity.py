@@ -49,13 +49,14 @@ from __future__ import annotations
 
 import html
 from dataclasses import dataclass, field
-from functools import lru_cache
 
 import numpy as np
 
+from course_lib.curves.bezier import end_derivative_matrix
+from course_lib.curves.curve import PiecewiseBezier
 from course_lib.curves.parametrization import as_parametrization
 from course_lib.geometry.chain_rule import bell_row, check_chain_rule_order
-from course_lib.geometry.differential_geometry import _arc_length_derivatives_unit, _typical_speed
+from course_lib.geometry.differential_geometry import arc_length_derivatives_unscaled, typical_speed
 from course_lib.homework import own_work
 from course_lib.validation import check_finite_scalar, check_integer, scaled_norm
 
@@ -196,12 +197,6 @@ class JointReport:
         )
 
 
-def _cross_norm(x: np.ndarray, y: np.ndarray) -> float:
-    if x.size == 2:
-        return abs(float(x[0] * y[1] - x[1] * y[0]))
-    return float(np.linalg.norm(np.cross(x, y)))
-
-
 def _end_derivs(c, at: float, n: int) -> np.ndarray:
     return np.stack([np.asarray(c.evaluate(at, k), dtype=float) for k in range(n + 1)])
 
@@ -209,11 +204,6 @@ def _end_derivs(c, at: float, n: int) -> np.ndarray:
 def _norms(x: np.ndarray) -> np.ndarray:
     """Plain norms: used on joints already scaled to a unit length scale (see _reports)."""
     return np.sqrt(np.einsum("...d,...d->...", x, x))
-
-
-def _leading(ok: np.ndarray) -> np.ndarray:
-    """Number of leading True rows per column of ``ok`` (shape (n, J))."""
-    return np.argmin(np.vstack([ok, np.zeros((1, ok.shape[1]), bool)]), axis=0)
 
 
 def _solve_betas(Q: np.ndarray, R: np.ndarray):
@@ -284,7 +274,7 @@ def _reports(
         cross = _norms(np.cross(dq[1], dr[1]))
     angle = np.degrees(np.arctan2(cross / (vq * vr), cosang))
     m = max(n, 2)
-    A = _arc_length_derivatives_unit(  # both sides in one vectorized call: (m, 2J, dim)
+    A = arc_length_derivatives_unscaled(  # both sides in one vectorized call: (m, 2J, dim)
         np.concatenate([dq[: m + 1], dr[: m + 1]], axis=1), np.concatenate([vq, vr]), m
     )
     Aq, Ar = A[:n, :J], A[:n, J:]
@@ -424,8 +414,8 @@ def joint_continuity(
         dr,
         hq,
         hr,
-        np.array([_typical_speed(q)]),
-        np.array([_typical_speed(r)]),
+        np.array([typical_speed(q)]),
+        np.array([typical_speed(r)]),
         n,
         rtol,
         atol,
@@ -439,20 +429,11 @@ def _bezier_end_derivatives(curve, m: int):
     (m+1, S, dim) at u = 0 and at u = 1, from the control points (seed 000 eq. (8)); the
     domain lengths ``h``; and each segment's typical speed (its control-point box diagonal
     over ``h``, the regularity scale)."""
-    segs = curve.segments
     h = np.diff(curve.knots)
-    degrees = curve.degrees
-    S, dim = len(segs), curve.dim
-    if len(set(degrees)) == 1:
-        groups = {degrees[0]: slice(None)}
-    else:
-        groups = {}
-        for i, d in enumerate(degrees):
-            groups.setdefault(d, []).append(i)
+    S, dim = curve.n_segments, curve.dim
     at01 = np.zeros((2, m + 1, S, dim))
     diag = np.empty(S)
-    for d, idx in groups.items():
-        D = np.array(segs) if isinstance(idx, slice) else np.stack([segs[i] for i in idx])
+    for d, idx, _rows, D in curve.segments_by_degree(0):
         top = min(m, d)
         E = _end_difference_rows(d, top)  # (2, top+1, d+1): orders 0..top at u = 0, 1
         at01[:, : top + 1, idx] = np.einsum("ekr,srd->eksd", E, D)
@@ -464,21 +445,10 @@ def _bezier_end_derivatives(curve, m: int):
     return at01[0], at01[1], h, speed
 
 
-@lru_cache(maxsize=64)
 def _end_difference_rows(d: int, n: int) -> np.ndarray:
-    """Rows mapping Bézier control points to derivatives 0..n at u = 0 and u = 1:
-    ``d!/(d-k)! Δ^k P_0`` and ``d!/(d-k)! ∇^k P_d`` (seed 000 eq. (8.1)-(8.3))."""
-    from math import comb
-
-    E = np.zeros((2, n + 1, d + 1))
-    fac = 1.0
-    for k in range(n + 1):
-        for j in range(k + 1):
-            E[0, k, j] = fac * (-1) ** (k - j) * comb(k, j)
-            E[1, k, d - k + j] = fac * (-1) ** (k - j) * comb(k, j)
-        fac *= d - k
-    E.setflags(write=False)
-    return E
+    """Rows mapping Bézier control points to derivatives 0..n at u = 0 and u = 1, stacked
+    ``(2, n + 1, d + 1)`` (:func:`course_lib.curves.bezier.end_derivative_matrix`)."""
+    return np.stack([end_derivative_matrix(d, n, 0), end_derivative_matrix(d, n, 1)])
 
 
 def curve_continuity(
@@ -495,8 +465,6 @@ def curve_continuity(
     not ``g_order``.
     """
     own_work.require("course_lib.geometry.continuity.curve_continuity")
-    from course_lib.curves.curve import PiecewiseBezier
-
     if not isinstance(curve, PiecewiseBezier):
         raise TypeError(
             f"curve must be a PiecewiseBezier, got {type(curve).__name__}; "

@@ -33,7 +33,13 @@ import numpy as np
 
 from course_lib.curves.curve import PiecewiseBezier
 from course_lib.curves.parametrization import as_parametrization, check_in_domain
-from course_lib.geometry.arc_length import piece_lengths, segment_length, segment_lengths
+from course_lib.geometry.arc_length import (
+    bezier_curve_length,
+    breakpoints,
+    gauss_legendre,
+    integrate_speed,
+    speed_integrals,
+)
 from course_lib.geometry.chain_rule import bell_row, check_chain_rule_order
 from course_lib.homework import own_work
 from course_lib.validation import (
@@ -68,21 +74,13 @@ __all__ = [
 REGULARITY_RTOL = 1e-10
 
 
-@lru_cache(maxsize=8)
-def _gauss_legendre(order: int) -> tuple[np.ndarray, np.ndarray]:
-    x, w = np.polynomial.legendre.leggauss(order)
-    x.setflags(write=False)
-    w.setflags(write=False)
-    return x, w
-
-
 # ------------------------------------------------------------------ helpers
 def _params(curve: object, t: object) -> tuple[np.ndarray, bool]:
     tt, scalar = as_parameter_array(t, "t")
     return check_in_domain(tt, tuple(curve.domain)), scalar  # type: ignore[attr-defined]
 
 
-def _typical_speed(curve) -> float:
+def typical_speed(curve) -> float:
     """A speed scale of the curve: the diagonal of its bounding box over the domain length.
 
     For a Bézier curve the box of the control points is used (it contains the curve);
@@ -107,7 +105,7 @@ def check_regular(curve, t: np.ndarray, d1: np.ndarray) -> np.ndarray:
         to name the place in the message).
     """
     v = scaled_norm(d1, axis=-1)
-    bad = v <= REGULARITY_RTOL * _typical_speed(curve)
+    bad = v <= REGULARITY_RTOL * typical_speed(curve)
     if np.any(bad):
         i = np.unravel_index(int(np.argmax(bad)), bad.shape)
         tt = np.asarray(t() if callable(t) else t, dtype=float)
@@ -135,110 +133,6 @@ def frame_from_derivatives(d1: np.ndarray, d2: np.ndarray, speed: np.ndarray | N
     T = d1 / v[..., None]
     K = (d2 - np.einsum("...d,...d->...", d2, T)[..., None] * T) / (v * v)[..., None]
     return T, K
-
-
-def breakpoints(curve) -> np.ndarray:
-    """Parameters where the curve may fail to be smooth: knots (if any) and the domain ends."""
-    a, b = curve.domain
-    bp = getattr(curve, "breakpoints", None)
-    if bp is None:
-        bp = getattr(curve, "knots", None)
-    if bp is None:
-        return np.array([a, b], dtype=float)
-    bp = np.asarray(bp, dtype=float)
-    return np.unique(np.concatenate([[a, b], bp[(bp > a) & (bp < b)]]))
-
-
-def _gl(curve, a: np.ndarray, b: np.ndarray, order: int = 20, speed=None) -> np.ndarray:
-    """Gauss-Legendre approximation of int_a^b |c'| on each interval (vectorized).
-
-    ``speed``, if given, replaces ``|c'|``: a function of a 1-d parameter array."""
-    x, w = _gauss_legendre(order)
-    half = 0.5 * (b - a)
-    nodes = (0.5 * (a + b))[:, None] + half[:, None] * x[None, :]
-    if speed is not None:
-        v = speed(nodes.ravel()).reshape(nodes.shape)
-    else:
-        v = scaled_norm(curve.evaluate(nodes.ravel(), 1), axis=-1).reshape(nodes.shape)
-    return half * (v @ w)
-
-
-def _integrate_speed(
-    curve, a: np.ndarray, b: np.ndarray, rtol: float = 1e-13, speed=None
-) -> np.ndarray:
-    """Adaptive Gauss-Legendre (20 nodes, bisection) of |c'| on each ``[a_i, b_i]``.
-
-    An interval is accepted when its 20-node value and the sum of the values on
-    its two halves agree to ``rtol`` (relative; the finer value is kept) -- for the
-    smooth speeds of polynomial and analytic curves after zero or one bisection.
-    ``speed`` (optional) replaces ``|c'|``, as in :func:`_gl`.
-
-    For a :class:`~course_lib.curves.curve.PiecewiseBezier` and intervals that each lie in one
-    segment (the callers split at the knots), every interval is a Bézier
-    piece measured by :func:`course_lib.geometry.arc_length.piece_lengths` instead: the same
-    certified rules as :func:`arc_length`, accurate near cusps too.
-    """
-    own_work.require("course_lib.geometry.differential_geometry._integrate_speed")
-    a = np.asarray(a, dtype=float)
-    b = np.asarray(b, dtype=float)
-    if speed is None and type(curve) is PiecewiseBezier and a.size:
-        pieces = _bezier_pieces(curve, a, b)
-        if pieces is not None:
-            return pieces
-    total = np.zeros(a.size)
-    if a.size == 0:
-        return total
-    owner = np.arange(a.size)
-    k = a.size
-    mid = 0.5 * (a + b)
-    # one vectorized evaluation per level: the whole intervals (first level only) and halves
-    first = _gl(curve, np.concatenate([a, a, mid]), np.concatenate([b, mid, b]), speed=speed)
-    whole, left, right = first[:k], first[k : 2 * k], first[2 * k :]
-    scale = max(float(np.abs(whole).sum()), 1e-300)
-    for depth in range(60):
-        if depth:
-            k = a.size
-            mid = 0.5 * (a + b)
-            halves = _gl(curve, np.concatenate([a, mid]), np.concatenate([mid, b]), speed=speed)
-            left, right = halves[:k], halves[k:]
-        both = left + right
-        err = np.abs(both - whole)
-        ok = (err <= rtol * np.abs(both)) | (err <= 1e-15 * scale)
-        if depth == 59 or a.size > 20000:  # give up refining (e.g. a cusp): keep the best value
-            ok[:] = True
-        np.add.at(total, owner[ok], both[ok])
-        if np.all(ok):
-            break
-        bad = ~ok
-        a = np.concatenate([a[bad], mid[bad]])
-        b = np.concatenate([mid[bad], b[bad]])
-        whole = np.concatenate([left[bad], right[bad]])
-        owner = np.concatenate([owner[bad], owner[bad]])
-    return total
-
-
-def _bezier_pieces(curve: PiecewiseBezier, a: np.ndarray, b: np.ndarray) -> np.ndarray | None:
-    """Lengths of ``curve`` on ``[a_i, b_i]`` as Bézier pieces, or None unless each interval
-    lies in one segment."""
-    k = curve.knots
-    last = k.size - 2
-    seg = np.clip(np.searchsorted(k, a, side="right") - 1, 0, last)
-    if np.any(np.clip(np.searchsorted(k, b, side="left") - 1, 0, last) > seg):
-        return None
-    h = k[seg + 1] - k[seg]
-    u0 = np.clip((a - k[seg]) / h, 0.0, 1.0)
-    u1 = np.clip((b - k[seg]) / h, 0.0, 1.0)
-    u0[a <= k[seg]] = 0.0  # exact ends: a whole segment is measured exactly as arc_length does
-    u1[b >= k[seg + 1]] = 1.0
-    if curve._array is not None:
-        return piece_lengths(curve._array[seg], u0, u1)
-    degrees = np.array(curve.degrees)[seg]
-    out = np.empty(a.size)
-    for d in np.unique(degrees):  # one vectorized call per degree present
-        m = degrees == d
-        P = np.stack([curve.segments[i] for i in seg[m].tolist()])
-        out[m] = piece_lengths(P, u0[m], u1[m])
-    return out
 
 
 # --------------------------------------------------------------- first order
@@ -348,7 +242,7 @@ def osculating_circle(curve, t: float | np.ndarray) -> tuple[np.ndarray, float |
     tt, scalar = _params(curve, t)
     K = np.atleast_2d(curvature_vector(curve, tt))
     k2 = np.sum(K * K, axis=-1)
-    k_scale = 1.0 / (_typical_speed(curve) * (curve.domain[1] - curve.domain[0]))
+    k_scale = 1.0 / (typical_speed(curve) * (curve.domain[1] - curve.domain[0]))
     flat = np.sqrt(k2) <= 1e-12 * k_scale
     if np.any(flat):
         bad = float(tt[np.argmax(flat)])
@@ -375,7 +269,7 @@ def cumulative_arc_length(curve, t: float | np.ndarray) -> float | np.ndarray:
     a = curve.domain[0]
     grid = np.unique(np.concatenate([[a], tt, breakpoints(curve)]))
     grid = grid[grid <= max(tt.max(), a)]
-    pieces = _integrate_speed(curve, grid[:-1], grid[1:])
+    pieces = integrate_speed(curve, grid[:-1], grid[1:])
     cum = np.concatenate([[0.0], np.cumsum(pieces)])
     s = cum[np.searchsorted(grid, tt)]
     return float(s[0]) if scalar else s
@@ -401,7 +295,7 @@ def arc_length(curve, t0: float | None = None, t1: float | None = None) -> float
     """
     own_work.require("course_lib.geometry.differential_geometry.arc_length")
     if t0 is None and t1 is None and type(curve) is PiecewiseBezier:
-        return _bezier_length(curve)  # the hot path: nothing to validate
+        return bezier_curve_length(curve)  # the hot path: nothing to validate
     curve = as_parametrization(curve)
     a, b = curve.domain
     t0 = a if t0 is None else check_finite_scalar(t0, "t0")
@@ -413,21 +307,10 @@ def arc_length(curve, t0: float | None = None, t1: float | None = None) -> float
     if hi <= lo:
         return 0.0
     if lo == a and hi == b and isinstance(curve, PiecewiseBezier):
-        return sign * _bezier_length(curve)
+        return sign * bezier_curve_length(curve)
     bp = breakpoints(curve)
     grid = np.unique(np.concatenate([[lo, hi], bp[(bp > lo) & (bp < hi)]]))
-    return sign * float(_integrate_speed(curve, grid[:-1], grid[1:]).sum())
-
-
-def _bezier_length(curve: PiecewiseBezier) -> float:
-    """Length of a whole :class:`~course_lib.curves.curve.PiecewiseBezier`: the sum of its segment
-    lengths (each independent of the knots), one vectorized call per degree."""
-    arr = curve._array
-    if arr is not None:
-        if arr.shape[0] == 1 and arr.shape[1] > 2:
-            return segment_length(arr[0])
-        return float(segment_lengths(arr).sum())
-    return float(sum(segment_lengths(stack).sum() for _, _, _, stack in curve._stacks(0)))
+    return sign * float(integrate_speed(curve, grid[:-1], grid[1:]).sum())
 
 
 def parameter_at_arc_length(curve, s: float | np.ndarray) -> float | np.ndarray:
@@ -453,7 +336,7 @@ def parameter_at_arc_length(curve, s: float | np.ndarray) -> float | np.ndarray:
     per = max(8, int(np.ceil(64 / (bp.size - 1))))
     frac = np.linspace(0.0, 1.0, per + 1)[:-1]
     grid = np.append((bp[:-1, None] + np.diff(bp)[:, None] * frac).ravel(), bp[-1])
-    S = np.concatenate([[0.0], np.cumsum(_integrate_speed(curve, grid[:-1], grid[1:]))])
+    S = np.concatenate([[0.0], np.cumsum(integrate_speed(curve, grid[:-1], grid[1:]))])
     L = S[-1]
     if not np.isfinite(L):
         raise ValueError(
@@ -471,7 +354,7 @@ def parameter_at_arc_length(curve, s: float | np.ndarray) -> float | np.ndarray:
     t = np.where(width > 0, lo + (ss - s_lo) / np.where(width > 0, width, 1.0) * (hi - lo), lo)
     base = grid[i]
     for _ in range(60):
-        F = s_lo + _gl(curve, base, t) - ss
+        F = s_lo + speed_integrals(curve, base, t) - ss
         if np.all(np.abs(F) <= 1e-15 * L + 4e-16 * np.abs(ss)):  # relative: scale-free
             break
         lo = np.where(F < 0, t, lo)
@@ -537,12 +420,15 @@ def _arc_length_derivatives_from(d: np.ndarray, v: np.ndarray, n: int) -> np.nda
     (``d^k c/ds^k`` is homogeneous of degree ``1 - k``): no intermediate over/underflow."""
     _, e = np.frexp(v)
     d = np.ldexp(d[: n + 1], -e[None, :, None])
-    A = _arc_length_derivatives_unit(d, np.ldexp(v, -e), n)
+    A = arc_length_derivatives_unscaled(d, np.ldexp(v, -e), n)
     k = np.arange(1, n + 1)[:, None, None]
     return np.ldexp(A, (1 - k) * e[None, :, None])
 
 
-def _arc_length_derivatives_unit(d: np.ndarray, v: np.ndarray, n: int) -> np.ndarray:
+def arc_length_derivatives_unscaled(d: np.ndarray, v: np.ndarray, n: int) -> np.ndarray:
+    """``d^k c/ds^k``, ``k = 1..n`` (shape ``(n, m, dim)``), from the parametric derivatives ``d``
+    (``(n + 1, m, dim)``) and speeds ``v = |d[1]|``, without the power-of-two scaling that
+    :func:`arc_length_derivatives` applies first (callers whose joints are already scaled)."""
     from math import comb
 
     m = d.shape[1]
@@ -657,7 +543,7 @@ def curve_from_curvature(
     else:
         theta0 = 0.0 if start_angle is None else check_finite_scalar(start_angle, "start_angle")
 
-    x, w = _gauss_legendre(16)
+    x, w = gauss_legendre(16)
     s = np.linspace(0.0, length, num)
     a, b = s[:-1], s[1:]
     h = 0.5 * (b - a)

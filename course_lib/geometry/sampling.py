@@ -13,7 +13,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from course_lib.curves.bezier import _derivative_points
+from course_lib.curves.bezier import derivative_points
 from course_lib.geometry import differential_geometry as dg
 from course_lib.validation import check_integer
 
@@ -87,7 +87,7 @@ def segment_derivatives(curve, per_segment: int, orders=(0,)) -> list[np.ndarray
         if k > d:
             out.append(np.zeros((V.shape[0], per_segment, V.shape[2])))
             continue
-        D = np.matmul(_local_bernstein(d - k, per_segment), _derivative_points(V, k))  # (S, n, dim)
+        D = np.matmul(_local_bernstein(d - k, per_segment), derivative_points(V, k))  # (S, n, dim)
         if k:
             D *= (h ** -float(k))[:, None, None]  # d/dt = (1/h_i) d/du on segment i
         out.append(D)
@@ -122,7 +122,7 @@ def point_derivatives(curve, t: np.ndarray, orders=(0,)) -> list[np.ndarray]:
             out.append(np.zeros((t.size, V.shape[2])))
             continue
         B = np.atleast_2d(bernstein(d - k, u))  # (m, d - k + 1)
-        D = np.einsum("mr,mrd->md", B, _derivative_points(V, k))
+        D = np.einsum("mr,mrd->md", B, derivative_points(V, k))
         if k:
             D *= (h ** -float(k))[:, None]
         out.append(D)
@@ -144,45 +144,3 @@ def tangent_and_curvature(
         derivatives, or a callable returning it) names the place.
     """
     return dg.frame_from_derivatives(d1, d2, dg.check_regular(curve, t, d1))
-
-
-@lru_cache(maxsize=32)
-def _gauss_bernstein(degree: int, breaks: tuple, order: int) -> tuple[np.ndarray, np.ndarray]:
-    """Bernstein matrix at the Gauss-Legendre nodes of every ``[breaks[j], breaks[j+1]]``
-    and the matching weights (``half-length * w``), both flattened interval by interval."""
-    from course_lib.curves.bezier import bernstein
-
-    x, w = np.polynomial.legendre.leggauss(order)
-    br = np.asarray(breaks)
-    half = 0.5 * np.diff(br)
-    nodes = (0.5 * (br[:-1] + br[1:]))[:, None] + half[:, None] * x[None, :]
-    B = np.array(bernstein(degree, nodes.ravel()), dtype=float)
-    W = (half[:, None] * w[None, :]).ravel()
-    B.setflags(write=False)
-    W.setflags(write=False)
-    return B, W
-
-
-def segment_arc_lengths(curve, per_segment: int, idx: np.ndarray, order: int = 16):
-    """Arc length from the start of the curve at the local samples ``idx`` of every
-    segment's grid, shape ``(S, len(idx))``, or None if the curve is not a PiecewiseBezier
-    of one degree (then use :func:`course_lib.geometry.differential_geometry.cumulative_arc_length`).
-
-    ``idx`` must start with 0 and end with ``per_segment - 1``.  Each piece between
-    consecutive samples is a fixed ``order``-node Gauss-Legendre sum of the speed
-    ``|dq/du|`` (``ds = |dq/du| du``), with the Bernstein matrix at the nodes cached: the
-    nodes are the same local parameters on every frame.  On the smooth speeds of regular
-    polynomial pieces this agrees with the adaptive quadrature of ``cumulative_arc_length``
-    to about 1e-12 relative (tests/unit/test_plotting.py); meant for live pictures.
-    """
-    if not _single_degree(curve):
-        return None
-    d = curve.degrees[0]
-    u = np.linspace(0.0, 1.0, per_segment)[np.asarray(idx)]
-    B, W = _gauss_bernstein(d - 1, tuple(u.tolist()), order)
-    Q = _derivative_points(np.stack(curve.segments), 1)  # hodograph points (S, d, dim)
-    speed = np.linalg.norm(np.matmul(B, Q), axis=-1)  # (S, J * order)
-    pieces = (speed * W).reshape(speed.shape[0], -1, order).sum(axis=-1)  # (S, J)
-    within = np.concatenate([np.zeros((pieces.shape[0], 1)), np.cumsum(pieces, axis=1)], axis=1)
-    start = np.concatenate([[0.0], np.cumsum(within[:-1, -1])])
-    return within + start[:, None]

@@ -1,8 +1,9 @@
 """Every student their own homework data: variants from a code.
 
-A homework that has variants declares a *generator* ``(rng) -> dict`` of its question data
-(points, β's, knots, the order of multiple-choice options, ...), registered here with
-:func:`register`.  Each student gets a short **variant code** from the instructor:
+A homework that has variants defines a *generator* ``generate(rng) -> dict`` of its question
+data (points, β's, knots, the order of multiple-choice options, ...) in its checks module
+``course_lib.homework.checks.hwNN``, and optionally ``strata(data) -> {qid: label}``; this
+module finds them there by the homework's name (nothing registers itself on import).  Each student gets a short **variant code** from the instructor:
 
     code = code_for(secret, "hw01", student_id)     # HMAC-SHA256 of homework and id
 
@@ -31,10 +32,9 @@ __all__ = [
     "code_for",
     "current",
     "data",
+    "generator",
     "generators",
     "normalize",
-    "register",
-    "register_strata",
     "rng_for",
     "strata",
 ]
@@ -42,59 +42,56 @@ __all__ = [
 DEFAULT = ""  # the code of the default data
 CODE_LENGTH = 10
 
-_GENERATORS: dict[str, Callable[[np.random.Generator | None], dict]] = {}
 _CURRENT: dict[str, dict] = {}
-_STRATA: dict[str, Callable[[dict], dict]] = {}
 
 
-def register(homework: str):
-    """Decorator: ``@register("hw01") def generate(rng)`` (``rng`` is None for the default data)."""
+def _checks_module(homework: str):
+    """The checks module of ``homework`` (``course_lib.homework.checks.hwNN``), or None."""
+    import importlib
+    import re
 
-    def deco(fn):
-        _GENERATORS[homework] = fn
-        return fn
+    if not isinstance(homework, str) or not re.fullmatch(r"hw\d\d", homework):
+        return None
+    name = f"course_lib.homework.checks.{homework}"
+    try:
+        return importlib.import_module(name)
+    except ModuleNotFoundError as exc:
+        if exc.name == name:
+            return None
+        raise
 
-    return deco
 
-
-def register_strata(homework: str):
-    """Decorator: ``@register_strata("hw01") def strata(data) -> {qid: label}``.
-
-    A label names the kind of variant a student got for a question (which letter is right,
-    the sign of a coefficient, ...): the class summary compares success rates across labels and
-    flags a question whose variants are not equally hard.
-    """
-
-    def deco(fn):
-        _STRATA[homework] = fn
-        return fn
-
-    return deco
+def generator(homework: str) -> Callable[[np.random.Generator | None], dict] | None:
+    """The data generator ``generate(rng)`` of ``homework`` (None if it has no variants)."""
+    module = _checks_module(homework)
+    fn = getattr(module, "generate", None)
+    return fn if callable(fn) else None
 
 
 def strata(homework: str, code: str) -> dict[str, str]:
-    """The labels of a variant's questions (empty where the homework declares none)."""
-    if homework not in _GENERATORS:
-        _load_all()
-    if homework not in _STRATA or homework not in _GENERATORS:
+    """The labels of a variant's questions (empty where the homework declares none).
+
+    A label names the kind of variant a student got for a question (which letter is right,
+    the sign of a coefficient, ...): the class summary compares success rates across labels and
+    flags a question whose variants are not equally hard.  A homework declares them with a
+    function ``strata(data) -> {qid: label}`` beside its ``generate``.
+    """
+    gen = generator(homework)
+    label = getattr(_checks_module(homework), "strata", None)
+    if gen is None or not callable(label):
         return {}
-    return dict(_STRATA[homework](_GENERATORS[homework](rng_for(homework, code))))
+    return dict(label(gen(rng_for(homework, code))))
 
 
 def generators() -> dict[str, Callable]:
-    _load_all()
-    return dict(_GENERATORS)
-
-
-def _load_all() -> None:
-    import importlib
+    """The generators of every homework that has variants, by homework."""
     import pkgutil
+    from pathlib import Path
 
-    from course_lib.homework import checks
-
-    for info in pkgutil.iter_modules(checks.__path__):
-        if info.name.startswith("hw"):
-            importlib.import_module(f"course_lib.homework.checks.{info.name}")
+    folder = Path(__file__).with_name("checks")  # found on disk, like checks.HOMEWORKS
+    names = sorted(m.name for m in pkgutil.iter_modules([str(folder)]))
+    found = {name: generator(name) for name in names}
+    return {name: fn for name, fn in found.items() if fn is not None}
 
 
 #: the characters of a code: no look-alikes (no 0/O, 1/I/L); 31 of them, a prime, so the
@@ -178,11 +175,10 @@ def rng_for(homework: str, code: str) -> np.random.Generator | None:
 
 def data(homework: str, code: str = DEFAULT) -> dict:
     """The question data of ``homework`` for the variant ``code`` (and remember it for the checks)."""
-    if homework not in _GENERATORS:
-        _load_all()
-    if homework not in _GENERATORS:
-        raise ValueError(f"{homework} has no variants (homeworks with variants: {sorted(_GENERATORS)})")
-    result = _GENERATORS[homework](rng_for(homework, code))
+    gen = generator(homework)
+    if gen is None:
+        raise ValueError(f"{homework} has no variants (homeworks with variants: {sorted(generators())})")
+    result = gen(rng_for(homework, code))
     _CURRENT[homework] = result
     return result
 

@@ -18,7 +18,7 @@ from course_lib.validation import check_integer
 __all__ = ["PatchArtists", "PatchPairArtists", "plot_patch", "plot_patch_pair"]
 
 
-def _require_3d(ax) -> None:
+def require_3d(ax) -> None:
     if getattr(ax, "name", "") != "3d":
         raise ValueError(
             "surface pictures need a 3D Axes: new_figure(projection='3d') or "
@@ -53,7 +53,7 @@ def plot_patch(
     resolution : int
         Samples per parameter direction.
     """
-    _require_3d(ax)
+    require_3d(ax)
     n = check_integer(resolution, "resolution", minimum=2)
     color = color or OKABE_ITO["blue"]
     s = np.linspace(0.0, 1.0, n)
@@ -133,7 +133,7 @@ def plot_patch_pair(
     ValueError
         If ``ax`` is not 3D, or a patch is not regular on the boundary.
     """
-    _require_3d(ax)
+    require_3d(ax)
     k = check_integer(n_normals, "n_normals", minimum=1)
     if not (isinstance(zoom, (int, float)) and 0.25 <= zoom <= 4):
         raise ValueError(f"zoom must be a number between 0.25 and 4, got {zoom!r}")

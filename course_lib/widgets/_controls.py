@@ -51,7 +51,7 @@ def snap_to_step(spec: SliderSpec, value: float) -> float:
     return round(grid, d) + 0.0  # + 0.0: no "-0"
 
 
-def _slider(spec: SliderSpec, value: float):
+def make_slider(spec: SliderSpec, value: float):
     import ipywidgets as w
 
     spec.check(value)  # never clamp silently
@@ -136,7 +136,7 @@ def assemble_curve_demo(
         else:
             rows.append(joint)
     for spec in sliders:
-        s = _slider(spec, st.get_param(spec.name, st.joint if nj else None))
+        s = make_slider(spec, st.get_param(spec.name, st.joint if nj else None))
         demo.controls[spec.name] = s
 
         def on_value(change, spec=spec):

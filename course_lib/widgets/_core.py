@@ -712,7 +712,7 @@ class CurveDemoView(BlitView):
 
 
 # ----------------------------------------------------------------------- widgets
-def _widgets_available() -> bool:
+def widgets_available() -> bool:
     # find_spec, not import: importing ipympl would switch pyplot's backend
     from importlib.util import find_spec
 

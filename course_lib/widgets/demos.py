@@ -30,7 +30,7 @@ from course_lib.widgets._core import (
     CurveDemoView,
     Demo,
     SliderSpec,
-    _widgets_available,
+    widgets_available,
 )
 from course_lib.widgets.reparam import reparametrization_demo
 
@@ -71,7 +71,7 @@ QUARTIC_BETA3 = SliderSpec("beta3", "β₃", -50.0, 50.0, 0.1, "cl-slider-beta3"
 
 
 def _static(static: bool | None) -> bool:
-    return (not _widgets_available()) if static is None else bool(static)
+    return (not widgets_available()) if static is None else bool(static)
 
 
 def _finish(

@@ -22,7 +22,7 @@ from course_lib.constructions.outlines import (
     glyph_outline,
     truetype_outline,
 )
-from course_lib.widgets._core import Demo, _widgets_available, make_figure
+from course_lib.widgets._core import Demo, make_figure, widgets_available
 
 __all__ = ["DEMO_FONTS", "GlyphDemoState", "GlyphDemoView", "glyph_demo"]
 
@@ -198,7 +198,7 @@ def glyph_demo(char: str = "S", font: str = "DejaVuSans", *, static: bool | None
         ``demo.state`` is the :class:`GlyphDemoState`; ``demo.controls`` has ``"char"``
         (a text box) and ``"font"`` (a dropdown).
     """
-    static = (not _widgets_available()) if static is None else bool(static)
+    static = (not widgets_available()) if static is None else bool(static)
     state = GlyphDemoState(char, font)
     view = GlyphDemoView(state, static=static)
     demo = Demo(state, view, static=static)

@@ -18,9 +18,9 @@ from course_lib.widgets._core import (
     BlitView,
     Demo,
     SliderSpec,
-    _widgets_available,
     fit_equal_limits,
     make_figure,
+    widgets_available,
 )
 
 __all__ = ["ReparametrizationState", "reparametrization_demo"]
@@ -226,7 +226,7 @@ def reparametrization_demo(
         If ``|a| >= 1`` or the points are bad; if ``a`` or ``v`` lies outside its
         slider's range (``[-0.9, 0.9]``, ``[0, 1]``).
     """
-    static = (not _widgets_available()) if static is None else bool(static)
+    static = (not widgets_available()) if static is None else bool(static)
     state = ReparametrizationState(points, a, v)  # |a| >= 1 raises here
     A_SLIDER.check(state.a)  # no initial value outside its slider (never clamped)
     V_SLIDER.check(state.v)
@@ -236,11 +236,11 @@ def reparametrization_demo(
     if static:
         return demo
 
-    from course_lib.widgets._controls import _slider, observe, snap_to_step
+    from course_lib.widgets._controls import make_slider, observe, snap_to_step
     from course_lib.widgets.interactor import PointDragger
 
-    sa = _slider(A_SLIDER, state.a)
-    sv = _slider(V_SLIDER, state.v)
+    sa = make_slider(A_SLIDER, state.a)
+    sv = make_slider(V_SLIDER, state.v)
     demo.controls.update(a=sa, t=sv)
     observe(demo, sa, lambda ch: state.set_a(snap_to_step(A_SLIDER, ch["new"])))
     observe(demo, sv, lambda ch: state.set_t(snap_to_step(V_SLIDER, ch["new"])))

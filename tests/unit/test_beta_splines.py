@@ -22,11 +22,11 @@ from course_lib.constructions.beta_splines import (
     cubic_beta_spline,
     cubic_beta_spline_basis,
     design_beta_spline,
+    gn_beta_spline_basis,
     quadratic_beta_spline,
     quadratic_beta_spline_basis,
 )
 from course_lib.curves.curve import PiecewiseBezier
-from course_lib.constructions.beta_splines import gn_beta_spline_basis
 
 seeds = st.integers(0, 10**6)
 

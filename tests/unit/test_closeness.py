@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from course_lib.geometry.closeness import closeness
 from course_lib.curves.parametrization import ParametricCurve
+from course_lib.geometry.closeness import closeness
 
 t = sp.Symbol("t")
 TT = np.linspace(0, np.pi, 401)

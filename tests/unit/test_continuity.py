@@ -18,9 +18,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from course_lib import PiecewiseBezier
+from course_lib.curves.parametrization import ParametricCurve
 from course_lib.geometry import differential_geometry as dg
 from course_lib.geometry.continuity import CHARACTERIZATIONS, curve_continuity, joint_continuity
-from course_lib.curves.parametrization import ParametricCurve
 from course_lib.geometry.reparametrization import ChangeOfVariables, Reparametrized
 
 V = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.5], [4.0, 1.0]])

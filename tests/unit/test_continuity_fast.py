@@ -12,12 +12,12 @@ import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from course_lib.geometry.chain_rule import bell_table
 from course_lib.constructions.beta_splines import cubic_beta_spline
 from course_lib.constructions.catmull_rom import catmull_rom
-from course_lib.geometry.continuity import curve_continuity, joint_continuity
 from course_lib.curves.curve import PiecewiseBezier
 from course_lib.curves.parametrization import ParametricCurve
+from course_lib.geometry.chain_rule import bell_table
+from course_lib.geometry.continuity import curve_continuity, joint_continuity
 
 BENCH = Path(__file__).resolve().parents[2] / "benchmarks"
 

@@ -1,11 +1,11 @@
-"""Tests of the fast evaluation paths of PiecewiseBezier.evaluate and bezier._bernstein.
+"""Tests of the fast evaluation paths of PiecewiseBezier.evaluate and bezier.bernstein_matrix.
 
 ``PiecewiseBezier.evaluate`` uses a cached two-sided Taylor (power-basis) form with
 Horner's rule for hodographs of degree <= ``_TAYLOR_MAX_DEGREE`` and the Bernstein
 form above.  Independent references here: exact rational de Casteljau on the exact
 hodograph (``fractions.Fraction``), the Bernstein form (``_eval_located``, and
 ``course_lib.curves.bezier.evaluate``), the chain rule written out by hand, and the
-textbook Bernstein formula for ``_bernstein``.
+textbook Bernstein formula for ``bernstein_matrix``.
 """
 
 from __future__ import annotations
@@ -22,7 +22,7 @@ from hypothesis import strategies as st
 from course_lib import PiecewiseBezier
 from course_lib.curves import bezier
 from course_lib.curves import curve as curve_module
-from course_lib.curves.bezier import _bernstein
+from course_lib.curves.bezier import bernstein_matrix
 
 TOP = curve_module._TAYLOR_MAX_DEGREE
 
@@ -255,7 +255,7 @@ def test_cache_does_not_leak_between_curves():
     np.testing.assert_allclose(c2.evaluate(0.5), 2 * c1.evaluate(0.5))
 
 
-# ------------------------------------------------------------------ _bernstein
+# ------------------------------------------------------------------ bernstein_matrix
 def textbook_bernstein(d: int, u: np.ndarray) -> np.ndarray:
     """comb(d, i) * u**i * (1 - u)**(d - i) with powers as repeated products."""
     out = np.empty((u.size, d + 1))
@@ -273,6 +273,6 @@ def textbook_bernstein(d: int, u: np.ndarray) -> np.ndarray:
 @pytest.mark.parametrize("d", range(0, 13))
 def test_fast_bernstein_is_the_textbook_formula_bit_for_bit(d):
     u = np.concatenate([np.random.default_rng(d).uniform(-0.5, 1.5, 500), [0.0, 0.5, 1.0]])
-    np.testing.assert_array_equal(_bernstein(d, u), textbook_bernstein(d, u))
+    np.testing.assert_array_equal(bernstein_matrix(d, u), textbook_bernstein(d, u))
     out = bezier.bernstein(d, u)
     assert out.shape == (u.size, d + 1) and out.flags.c_contiguous

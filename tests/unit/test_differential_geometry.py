@@ -12,8 +12,8 @@ import pytest
 from scipy import integrate, special
 
 from course_lib import PiecewiseBezier
-from course_lib.geometry import differential_geometry as dg
 from course_lib.curves.parametrization import ParametricCurve
+from course_lib.geometry import differential_geometry as dg
 
 
 def circle(R=2.0, center=(1.0, -1.0), orientation=1.0, domain=(0.0, 5.0)):

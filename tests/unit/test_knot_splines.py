@@ -14,8 +14,12 @@ from _spline_checks import check_joint
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from course_lib.constructions.knot_splines import (
+    bezier_points_from_g1,
+    g1_knot_spline,
+    knot_ratio_beta1,
+)
 from course_lib.geometry.continuity import curve_continuity
-from course_lib.constructions.knot_splines import bezier_points_from_g1, g1_knot_spline, knot_ratio_beta1
 
 
 def _knots(rng, L):

@@ -16,7 +16,6 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from course_lib import PiecewiseBezier
-from course_lib.geometry.continuity import curve_continuity, joint_continuity
 from course_lib.constructions.outlines import (
     KINDS,
     Outline,
@@ -31,6 +30,7 @@ from course_lib.constructions.outlines import (
     truetype_contour,
     truetype_outline,
 )
+from course_lib.geometry.continuity import curve_continuity, joint_continuity
 
 FONTS = ("DejaVuSans", "DejaVuSerif", "DejaVuSansMono", "STIXGeneral", "cmr10")
 EM_TOL = 1e-12

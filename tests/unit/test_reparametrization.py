@@ -13,8 +13,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from course_lib import PiecewiseBezier
-from course_lib.geometry import differential_geometry as dg
 from course_lib.curves.parametrization import ParametricCurve
+from course_lib.geometry import differential_geometry as dg
 from course_lib.geometry.reparametrization import (
     ChangeOfVariables,
     Reparametrized,

@@ -361,8 +361,8 @@ def test_automatic_static_fallback_without_widgets(monkeypatch):
     import course_lib.widgets._core as core
     import course_lib.widgets.demos as demos
 
-    monkeypatch.setattr(core, "_widgets_available", lambda: False)
-    monkeypatch.setattr(demos, "_widgets_available", lambda: False)
+    monkeypatch.setattr(core, "widgets_available", lambda: False)
+    monkeypatch.setattr(demos, "widgets_available", lambda: False)
     demo = demos.beta_spline_demo()
     assert demo.widget is None and type(demo.figure.canvas).__name__ == "FigureCanvasAgg"
     assert "image/png" in demo._repr_mimebundle_()
@@ -708,8 +708,8 @@ def test_report_shows_the_demos_order_and_details_on_request():
 
 
 def test_rotating_the_3d_pair_uses_coarse_surfaces_until_release():
-    from course_lib.plotting.surfaces3d import plot_patch_pair
     from course_lib.constructions.surfaces import BezierPatch, g1_neighbour_patch
+    from course_lib.plotting.surfaces3d import plot_patch_pair
 
     xy = np.stack(np.meshgrid(np.arange(4.0), np.arange(4.0), indexing="ij"), axis=-1)
     hill = [[0, 0.5, 0.5, 0], [0.3, 1.6, 1.3, 0.2], [0.2, 1.3, 1.8, 0.4], [0, 0.4, 0.7, 0.2]]

@@ -49,10 +49,16 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from course_lib import PiecewiseBezier
-from course_lib.homework import variants
 from course_lib.constructions.beta_splines import cubic_beta_spline
+from course_lib.constructions.outlines import (
+    Contour,
+    Outline,
+    classify_joints,
+    glyph_outline,
+    glyph_summary,
+)
+from course_lib.homework import variants
 from course_lib.homework.checks import check, check_all
-from course_lib.constructions.outlines import Contour, Outline, classify_joints, glyph_outline, glyph_summary
 from course_lib.plotting import plot_outline
 
 HOMEWORK = "hw05"

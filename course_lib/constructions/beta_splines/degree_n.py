@@ -41,7 +41,7 @@ from math import comb, factorial
 
 import numpy as np
 
-from course_lib.curves.bezier import _bernstein, _derivative_points
+from course_lib.curves.bezier import bernstein_matrix, derivative_points, end_derivative_matrix
 from course_lib.curves.curve import PiecewiseBezier
 from course_lib.geometry.beta_constraints import beta_coefficients
 from course_lib.validation import (
@@ -53,17 +53,6 @@ from course_lib.validation import (
 )
 
 __all__ = ["BetaSplineBasis", "beta_spline", "gn_beta_spline_basis", "quartic_beta_spline"]
-
-
-def _end_rows(d: int, n: int, end: int) -> np.ndarray:
-    """Matrix (n+1, d+1): Bernstein coefficients -> derivatives 0..n at u = end."""
-    E = np.zeros((n + 1, d + 1))
-    for i in range(n + 1):
-        f = factorial(d) / factorial(d - i)
-        for j in range(i + 1):
-            col = j if end == 0 else d - i + j
-            E[i, col] = f * (-1) ** (i - j) * comb(i, j)
-    return E
 
 
 def _check_betas(betas: object, n: int) -> tuple[float, ...]:
@@ -190,7 +179,7 @@ def _solve(n: int, betas: tuple, seed_eq_2_10: bool = False) -> np.ndarray:
         M[0, 0] = 1.0
         M[1:, 1:] = beta_coefficients(np.array(pb))
         Ms[pb] = M
-    E0, E1 = _end_rows(d, n, 0), _end_rows(d, n, 1)
+    E0, E1 = end_derivative_matrix(d, n, 0), end_derivative_matrix(d, n, 1)
     N = d + 1  # number of basis functions
     rows = []
     for k in range(d + 2):  # pair (b_{k-1} on the right segment, b_k on the left)
@@ -261,8 +250,8 @@ class BetaSplineBasis:
         """``b_k^{(order)}(u)`` for ``k = 0..d``: shape ``(d + 1,)`` or ``(m, d + 1)``."""
         order = check_integer(order, "order", minimum=0)
         uu, scalar = as_parameter_array(u, "u")
-        Q = np.stack([_derivative_points(c[:, None], order)[:, 0] for c in self.coefficients])
-        out = _bernstein(Q.shape[1] - 1, uu) @ Q.T
+        Q = np.stack([derivative_points(c[:, None], order)[:, 0] for c in self.coefficients])
+        out = bernstein_matrix(Q.shape[1] - 1, uu) @ Q.T
         return out[0] if scalar else out
 
     def bump(self, t: float | np.ndarray) -> np.ndarray:
@@ -274,7 +263,7 @@ class BetaSplineBasis:
         tt, scalar = as_parameter_array(t, "t")
         d = self.degree
         s = np.clip(np.floor(tt).astype(np.intp), 0, d)
-        B = _bernstein(d, np.clip(tt - s, 0.0, 1.0))
+        B = bernstein_matrix(d, np.clip(tt - s, 0.0, 1.0))
         out = np.einsum("mr,mr->m", B, self.coefficients[d - s])
         out[(tt < 0) | (tt > d + 1)] = 0.0
         return out[0] if scalar else out
@@ -346,7 +335,7 @@ def beta_spline(V: np.ndarray, betas: object, n: int = 3) -> PiecewiseBezier:
             info = {f"beta{i + 1}": jb[:, i].copy() for i in range(n)}
             info["betas"] = jb
             _check_spline_tangents(segs, P, d)
-            return PiecewiseBezier._fast(list(segs), info=info)
+            return PiecewiseBezier.from_trusted_segments(list(segs), info=info)
         betas = tuple(jb[0]) if S > 1 else (1.0,) + (0.0,) * (n - 1)
     basis = gn_beta_spline_basis(n, betas)
     win = np.lib.stride_tricks.sliding_window_view(P, d + 1, axis=0)  # (S, dim, d+1)
@@ -354,7 +343,7 @@ def beta_spline(V: np.ndarray, betas: object, n: int = 3) -> PiecewiseBezier:
     info: dict[str, object] = {f"beta{i + 1}": np.full(S - 1, b) for i, b in enumerate(basis.betas)}
     info["betas"] = basis.betas
     _check_spline_tangents(segs, P, d)
-    return PiecewiseBezier._fast(list(segs), info=info)
+    return PiecewiseBezier.from_trusted_segments(list(segs), info=info)
 
 
 def _check_joint_betas(arr: np.ndarray, n: int, joints: int) -> np.ndarray:

@@ -40,7 +40,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from course_lib.curves.bezier import _bernstein
+from course_lib.curves.bezier import bernstein_matrix
 from course_lib.curves.curve import PiecewiseBezier
 from course_lib.homework import own_work
 from course_lib.validation import as_parameter_array, as_points, check_shape_parameters, scaled_norm
@@ -234,7 +234,7 @@ def _cubic_curve(W1, W2, J, b1, b2, g, joints: slice) -> PiecewiseBezier:
         "junction_points": J,
         "interior_points": np.stack([W1, W2], axis=1),
     }
-    return PiecewiseBezier._fast(list(_cubic_polygons_from(W1, W2, J)), info=info)
+    return PiecewiseBezier.from_trusted_segments(list(_cubic_polygons_from(W1, W2, J)), info=info)
 
 
 def _check_joint_tangents(A: np.ndarray, B: np.ndarray, P: np.ndarray, where, what: str):
@@ -287,7 +287,7 @@ def quadratic_beta_spline(V: np.ndarray, beta1: float | np.ndarray = 1.0) -> Pie
         "junction_points": J,
         "interior_points": P[1:-1].copy(),
     }
-    return PiecewiseBezier._fast(list(segs), info=info)
+    return PiecewiseBezier.from_trusted_segments(list(segs), info=info)
 
 
 def cubic_beta_spline(
@@ -346,7 +346,7 @@ def _basis(segs: np.ndarray, t: object) -> np.ndarray:
         raise ValueError(f"t must lie in the domain [0, {S}]; got {bad}")
     idx = np.minimum(np.floor(tt).astype(np.intp), S - 1)
     u = tt - idx
-    B = _bernstein(segs.shape[1] - 1, u)
+    B = bernstein_matrix(segs.shape[1] - 1, u)
     out = np.einsum("md,mdk->mk", B, segs[idx])
     return out[0] if scalar else out
 

@@ -167,7 +167,7 @@ def truetype_contour(points: object, on_curve: object) -> Contour:
     ((segs, implied),) = _truetype_contours(P, on, np.array([P.shape[0] - 1]))
     if not segs:
         raise ValueError("the contour's points all coincide: it has no segment to draw")
-    return Contour(PiecewiseBezier._fast(segs), True, implied)
+    return Contour(PiecewiseBezier.from_trusted_segments(segs), True, implied)
 
 
 def truetype_outline(
@@ -270,7 +270,7 @@ def outline_from_glyf(glyf, hmtx, name: str, path: str, scale: float) -> Outline
         if not segs:
             skipped += 1
             continue
-        contours.append(Contour(PiecewiseBezier._fast(segs), True, implied))
+        contours.append(Contour(PiecewiseBezier.from_trusted_segments(segs), True, implied))
         raw.append((p, o))
     return Outline(tuple(contours), name, path, scale, skipped, tuple(raw))
 

@@ -68,7 +68,7 @@ def svg_outline(
     contours = []
     subpaths, skipped = svg_subpaths(d, arcs, tol)
     for segs, closed, _pos in subpaths:
-        curve = PiecewiseBezier._fast(segs)
+        curve = PiecewiseBezier.from_trusted_segments(segs)
         contours.append(Contour(curve, closed, np.zeros(len(segs) - 1 + closed, bool)))
     return Outline(tuple(contours), name, "svg path data", skipped=skipped)
 
