@@ -22,16 +22,14 @@ Lesson: ``notebooks/01_reparametrization.ipynb`` (piecewise curves and joints),
 from __future__ import annotations
 
 import warnings
-from bisect import bisect_right
 from collections.abc import Mapping, Sequence
-from functools import lru_cache
 from itertools import pairwise
-from math import comb, factorial
 from types import MappingProxyType
 
 import numpy as np
 
 from course_lib.curves.bezier import bernstein_matrix, derivative_points, end_derivative_points
+from course_lib.curves.evaluation import Evaluator
 from course_lib.validation import (
     as_parameter_array,
     as_points,
@@ -41,73 +39,6 @@ from course_lib.validation import (
 )
 
 __all__ = ["PiecewiseBezier"]
-
-# Hodographs of degree up to this are evaluated from the two-sided Taylor form
-# (PiecewiseBezier._taylor); above it, from the Bernstein form (stable for any degree).
-_TAYLOR_MAX_DEGREE = 8
-# Curves with at least this many segments, evaluated at fewer than 4 parameters per
-# segment before any table exists, are evaluated from the Bernstein form of the located
-# segments only (building the O(segments) Taylor table would cost more than it saves).
-_LAZY_MIN_SEGMENTS = 4096
-# Parameters are evaluated in chunks of this many so the temporaries stay in cache.
-_CHUNK = 1 << 15
-
-
-def _horner_chunk(t: np.ndarray, table: np.ndarray, halves: tuple, out: np.ndarray) -> None:
-    """Evaluate the two-sided Taylor form at in-domain parameters ``t`` into ``out``."""
-    bp, anchor, hh, unit = halves
-    last = anchor.size - 1
-    # j is within [0, last] by construction: mode="clip" skips take()'s bounds checks.
-    if unit:
-        # Knots 0, 1, ..., S and t >= 0: the half-segment index is floor(2 t), exactly,
-        # and t - anchor is exact (Sterbenz), so no search and no division.
-        j = (t * 2.0).astype(np.intp)
-        np.minimum(j, last, out=j)
-        w = t - anchor.take(j, mode="clip")
-    else:
-        j = np.searchsorted(bp, t, side="right")
-        j -= 1
-        np.clip(j, 0, last, out=j)
-        w = t - anchor.take(j, mode="clip")
-        w /= hh.take(j, mode="clip")
-    # One coordinate at a time on contiguous 1-d arrays (the table is laid out
-    # (level, coordinate, half) for that): an (m, dim) array times an (m, 1) column
-    # runs an inner loop of length dim and costs several times more.
-    top = table.shape[0] - 1
-    for c in range(table.shape[1]):
-        acc = table[top, c].take(j, mode="clip")
-        if top == 0:
-            out[:, c] = acc
-            continue
-        for k in range(top - 1, 0, -1):
-            acc *= w
-            acc += table[k, c].take(j, mode="clip")
-        acc *= w
-        np.add(acc, table[0, c].take(j, mode="clip"), out=out[:, c])
-
-
-@lru_cache(maxsize=64)
-def _taylor_matrix(d: int, n: int) -> np.ndarray:
-    """Integer matrix taking a degree-``d`` control polygon ``P`` to the two-sided Taylor
-    coefficients of its n-th derivative (see :meth:`PiecewiseBezier._taylor`).
-
-    With ``e = d - n`` and ``Δ^m P_i = sum_j (-1)^(m-j) C(m, j) P_(i+j)``, row ``k`` is
-    ``C(e, k) d!/e! Δ^(n+k) P_0`` (expansion at ``u = 0``) and row ``e + 1 + k`` is
-    ``C(e, k) d!/e! Δ^(n+k) P_(e-k)`` (expansion at ``u = 1``), ``k = 0..e``.
-    Built in exact integer arithmetic.
-    """
-    e = d - n
-    M = np.zeros((2 * (e + 1), d + 1))
-    for k in range(e + 1):
-        m = n + k
-        c = comb(e, k) * (factorial(d) // factorial(e))
-        for j in range(m + 1):
-            w = c * comb(m, j) * (-1) ** (m - j)
-            M[k, j] = w
-            M[e + 1 + k, e - k + j] = w
-    M.setflags(write=False)
-    return M
-
 
 def _uniform_array(segments: object) -> np.ndarray | None:
     """``segments`` as one validated float array (S, d + 1, dim) when it is one (an
@@ -179,7 +110,7 @@ class PiecewiseBezier:
     array([2., 0.])
     """
 
-    __slots__ = ("_array", "_cache", "_degrees", "_info", "_knots", "_segments", "has_knots")
+    __slots__ = ("_array", "_degrees", "_engine", "_info", "_knots", "_segments", "has_knots")
 
     def __init__(
         self,
@@ -238,7 +169,7 @@ class PiecewiseBezier:
         self._knots = _readonly(knots)
         self.has_knots = bool(has_knots)
         self._info = MappingProxyType(dict(info or {}))
-        self._cache: dict = {}
+        self._engine: Evaluator | None = None
 
     def _init_array(self, arr, knots, has_knots, info) -> None:
         """Uniform degree: the segments are one read-only (S, d + 1, dim) array (no
@@ -249,7 +180,7 @@ class PiecewiseBezier:
         self._knots = _readonly(knots)
         self.has_knots = bool(has_knots)
         self._info = MappingProxyType(dict(info or {}))
-        self._cache: dict = {}
+        self._engine: Evaluator | None = None
 
     @classmethod
     def from_trusted_segments(cls, segments, knots=None, info=None) -> PiecewiseBezier:
@@ -413,6 +344,17 @@ class PiecewiseBezier:
         return end_derivative_points(self.segments[i], n, end)
 
     @property
+    def engine(self) -> Evaluator:
+        """The evaluation engine of this curve (:mod:`course_lib.curves.evaluation`), made on
+        first use: the fast paths behind :meth:`evaluate` and their caches."""
+        if self._engine is None:
+            segments = self._segments if self._array is None else None
+            self._engine = Evaluator(
+                self._array, segments, self._degrees, self._knots, self.dim, self.check_domain
+            )
+        return self._engine
+
+    @property
     def uniform_array(self) -> np.ndarray | None:
         """All control points as one read-only ``(S, d + 1, dim)`` array when every segment has
         the same degree ``d``, else None (the fast paths of the analysis use it)."""
@@ -429,24 +371,7 @@ class PiecewiseBezier:
             other degrees) and ``points`` of shape ``(len(indices), degree - n + 1, dim)``
             (seed 000 eq. (8)).  Cached per ``n``; the arrays must not be modified.
         """
-        key = ("stack", n)
-        if key not in self._cache:
-            if self._array is not None:
-                S = self.n_segments
-                stack = derivative_points(self._array, n)
-                self._cache[key] = [(self._degrees[0], np.arange(S), np.arange(S), stack)]
-                return self._cache[key]
-            groups: dict[int, list[int]] = {}
-            for i, d in enumerate(self.degrees):
-                groups.setdefault(d, []).append(i)
-            out = []
-            for d, idx in groups.items():
-                rows = np.full(self.n_segments, -1)
-                rows[idx] = np.arange(len(idx))
-                stack = np.stack([derivative_points(self._segments[i], n) for i in idx])
-                out.append((d, np.array(idx), rows, stack))
-            self._cache[key] = out
-        return self._cache[key]
+        return self.engine.segments_by_degree(n)
 
     def locate(self, t: float | np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Segment index and local parameter of global parameters ``t``.
@@ -505,19 +430,16 @@ class PiecewiseBezier:
         return tt, scalar, self.check_domain(tt)
 
     def _locate(self, tt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        k = self._knots
-        self.check_domain(tt)
-        idx = np.clip(np.searchsorted(k, tt, side="right") - 1, 0, self.n_segments - 1)
-        u = (tt - k[idx]) / (k[idx + 1] - k[idx])
-        return idx, np.clip(u, 0.0, 1.0)
+        return self.engine.locate(tt)
 
     def evaluate(self, t: float | np.ndarray, n: int = 0) -> np.ndarray:
         """Points (``n = 0``) or n-th derivatives in the *global* parameter ``t``.
 
         Vectorized, no per-point Python loop: each segment's n-th derivative is
         evaluated from a cached two-sided Taylor form (Horner's rule on
-        ``|w| <= 1/2``, see :meth:`_taylor`), or, for hodographs of degree above
-        ``_TAYLOR_MAX_DEGREE``, from the Bernstein form grouped by degree.
+        ``|w| <= 1/2``), or, for hodographs of degree above ``TAYLOR_MAX_DEGREE``, from
+        the Bernstein form grouped by degree -- the fast paths of
+        :mod:`course_lib.curves.evaluation`, behind this façade.
 
         Parameters
         ----------
@@ -533,151 +455,8 @@ class PiecewiseBezier:
         """
         n = check_integer(n, "n", minimum=0)
         tt, scalar, clip = self._parameters(t)
-        few = (
-            self.n_segments >= _LAZY_MIN_SEGMENTS
-            and tt.size < 4 * self.n_segments
-            and ("taylor", n) not in self._cache
-        )
-        table = None if few else self._taylor(n)
-        if table is None:
-            idx, u = self._locate(tt)
-            out = self._eval_located(idx, u, n)
-            if n:
-                h = np.diff(self._knots)
-                out *= (h[idx] ** -float(n))[:, None]
-        elif tt.size == 1:
-            out = self._horner_one(float(tt[0]), n)[None, :]
-        else:
-            if clip:
-                tt = np.clip(tt, self._knots[0], self._knots[-1])
-            out = np.empty((tt.size, self.dim))
-            halves = self._halves()
-            for s in range(0, tt.size, _CHUNK):
-                _horner_chunk(tt[s : s + _CHUNK], table, halves, out[s : s + _CHUNK])
+        out = self.engine.evaluate(tt, n, clip)
         return out[0] if scalar else out
-
-    def _taylor(self, n: int) -> np.ndarray | None:
-        """Two-sided Taylor coefficients of the n-th global derivative, or None.
-
-        Segment ``i`` is split at ``u = 1/2``.  With ``Q`` the control points of its
-        n-th hodograph (degree ``e``), the left half is expanded at ``u = 0`` and
-        the right half at ``u = 1``:
-
-        .. math:: q^{(n)}(u) = \\sum_k \\binom{e}{k} \\Delta^k Q_0\\, u^k
-                 = \\sum_k \\binom{e}{k} \\Delta^k Q_{e-k}\\, (u - 1)^k,
-
-        the Taylor coefficients being the end derivatives of seed 000
-        eq. (8.1)-(8.3) divided by ``k!``.  Row ``2 i`` (left) and ``2 i + 1``
-        (right) of ``table[k]`` hold the coefficients of ``w^k`` times
-        ``h_i^{-n}`` (the chain rule), zero-padded to the largest degree (the table's
-        shape is ``(levels, dim, 2 S)``: level ``k``, coordinate, half-segment).  As
-        ``|Δ^k Q| <= 2^k max|Q|`` and ``|w| <= 1/2``, the terms sum to at most
-        ``2^e max|Q|`` in absolute value, so Horner's rule loses a small multiple of
-        ``2^e`` ulps of ``max|Q|`` -- below 1e-13 relative up to ``e = 8``
-        (tests/unit/test_curve_fast_paths.py) -- and the segment ends (``w = 0``)
-        are exact.  ``None`` when some ``e`` exceeds ``_TAYLOR_MAX_DEGREE``.
-        """
-        key = ("taylor", n)
-        if key not in self._cache:
-            top = max(0, (self._degrees[0] if self._array is not None else max(self._degrees)) - n)
-            self._cache[key] = None if top > _TAYLOR_MAX_DEGREE else self._taylor_table(n, top)
-        return self._cache[key]
-
-    def _taylor_table(self, n: int, top: int) -> np.ndarray:
-        """Build the table of :meth:`_taylor`: one matrix product per degree present
-        (curves are rebuilt on every slider move, so this must be cheap too)."""
-        h = np.diff(self._knots)
-        scale = h ** -float(n) if n else np.ones_like(h)
-        if self._array is not None:
-            d = self._degrees[0]
-            e = d - n
-            table = np.empty((top + 1, self.dim, 2 * self.n_segments))
-            if e < 0:
-                table[:] = 0.0
-            else:
-                S, dim = self.n_segments, self.dim
-                A = self._array.transpose(1, 2, 0).reshape(d + 1, dim * S)
-                C = (_taylor_matrix(d, n) @ A).reshape(2 * (e + 1), dim, S)  # one GEMM
-                if n:
-                    C *= scale
-                table[: e + 1, :, 0::2] = C[: e + 1]
-                table[: e + 1, :, 1::2] = C[e + 1 :]
-            table.setflags(write=False)
-            return table
-        table = np.zeros((top + 1, self.dim, 2 * self.n_segments))
-        groups: dict[int, list[int]] = {}
-        for i, d in enumerate(self.degrees):
-            groups.setdefault(d, []).append(i)
-        for d, members in groups.items():
-            e = d - n
-            if e < 0:  # derivative order above the degree: the zero polynomial
-                continue
-            idx = np.array(members)
-            Q = np.stack([self._segments[i] for i in members])  # (G, d + 1, dim)
-            C = np.matmul(_taylor_matrix(d, n), Q) * scale[idx][:, None, None]
-            table[: e + 1, :, 2 * idx] = C[:, : e + 1].transpose(1, 2, 0)
-            table[: e + 1, :, 2 * idx + 1] = C[:, e + 1 :].transpose(1, 2, 0)
-        table.setflags(write=False)
-        return table
-
-    def _horner_one(self, x: float, n: int) -> np.ndarray:
-        """One parameter: the same arithmetic as :func:`_horner_chunk` on Python floats
-        (same operations in the same order, so the same bits), without array overhead."""
-        key = ("taylor-lists", n)
-        if key not in self._cache:
-            bp, anchor, hh, unit = self._halves()
-            table = self._taylor(n).transpose(0, 2, 1)  # (level, half, coordinate)
-            rows = [[tuple(p) for p in level] for level in table.tolist()]
-            self._cache[key] = (bp.tolist(), anchor.tolist(), hh.tolist(), unit, rows)
-        bp, anchor, hh, unit, rows = self._cache[key]
-        if not bp[0] <= x <= bp[-1]:
-            self.check_domain(np.array([x]))  # raises unless within rounding tolerance
-            x = min(max(x, bp[0]), bp[-1])
-        last = len(anchor) - 1
-        if unit:
-            j = min(int(2.0 * x), last)
-            w = x - anchor[j]
-        else:
-            j = min(max(bisect_right(bp, x) - 1, 0), last)
-            w = (x - anchor[j]) / hh[j]
-        acc = rows[-1][j]
-        for level in reversed(rows[:-1]):
-            acc = [a * w + c for a, c in zip(acc, level[j], strict=True)]
-        return np.array(acc, dtype=float)
-
-    def _halves(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, bool]:
-        """Half-segment breakpoints, anchors (the expansion points) and lengths.
-
-        Half ``j`` of segment ``i = j // 2`` is ``[t_i, m_i]`` (``j`` even, anchor
-        ``t_i``) or ``[m_i, t_{i+1}]`` (``j`` odd, anchor ``t_{i+1}``), ``m_i`` the
-        midpoint; the last flag is True for the default knots ``0, 1, ..., S``.
-        """
-        if "halves" not in self._cache:
-            k = self._knots
-            S = self.n_segments
-            bp = np.empty(2 * S + 1)
-            bp[0::2] = k
-            bp[1::2] = 0.5 * (k[:-1] + k[1:])
-            anchor = np.empty(2 * S)
-            anchor[0::2] = k[:-1]
-            anchor[1::2] = k[1:]
-            unit = bool(np.array_equal(k, np.arange(S + 1, dtype=float)))
-            self._cache["halves"] = (bp, anchor, np.repeat(np.diff(k), 2), unit)
-        return self._cache["halves"]
-
-    def _eval_located(self, idx: np.ndarray, u: np.ndarray, n: int) -> np.ndarray:
-        stacks = self.segments_by_degree(n)
-        if len(stacks) == 1:
-            _, _, rows, stack = stacks[0]
-            B = bernstein_matrix(stack.shape[1] - 1, u)
-            return np.einsum("mk,mkd->md", B, stack[rows[idx]])
-        out = np.empty((u.size, self.dim))
-        for _, _, rows, stack in stacks:
-            r = rows[idx]
-            mask = r >= 0
-            B = bernstein_matrix(stack.shape[1] - 1, u[mask])
-            out[mask] = np.einsum("mk,mkd->md", B, stack[r[mask]])
-        return out
 
     def sample(self, per_segment: int = 64) -> tuple[np.ndarray, np.ndarray]:
         """Global parameters and points for drawing: ``per_segment`` samples per segment.

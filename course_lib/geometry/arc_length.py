@@ -20,7 +20,7 @@ many (*fine*) -- with one precomputed matrix.  A segment's fine value is accepte
    least about a node spacing away from ``[0, 1]``: the nodes see every feature of the
    speed, and condition 1 is a meaningful error estimate.  (Without condition 2 both
    rules agree to 1e-16 on a speed dip narrower than the node spacing and are both
-   wrong by up to 1e-11: ``tests/unit/test_arc_length_fast.py``.)
+   wrong by up to 1e-11: ``tests/unit/test_arc_length.py``.)
 
 **Second stage**: the segments the first stage does not certify (out of the safe range
 after a power-of-two scaling, or with a strongly varying speed) are tried on a grid of
@@ -97,7 +97,7 @@ RTOL = 1e-13
 SEPARATION = 4.0
 #: Agreement of successive bisection levels required by the robust path.  Near a cusp the
 #: level-to-level difference underestimates the error (1e-13 leaves up to 8e-13 on the
-#: near-cusps of ``tests/unit/test_arc_length_fast.py``); 1e-15 leaves about 2e-16.
+#: near-cusps of ``tests/unit/test_arc_length.py``); 1e-15 leaves about 2e-16.
 ROBUST_RTOL = 1e-15
 #: Gauss-Legendre nodes per subinterval of the robust path's graded mesh (on it every
 #: singularity of the speed is at least about one subinterval away: ``rho >= 5.8``).

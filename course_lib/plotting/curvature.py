@@ -12,8 +12,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from course_lib.geometry import differential_geometry as dg
+from course_lib.geometry.arc_length import segment_arc_lengths
 from course_lib.geometry.sampling import (
-    segment_arc_lengths,
     segment_derivatives,
     segment_grid,
     tangent_and_curvature,
@@ -196,7 +196,7 @@ def curvature_profile(
 
     ``arc_length_every = k > 1`` computes the arc length (the costly part) at every k-th
     sample and at both ends of every segment (fixed Gauss-Legendre sums with cached
-    Bernstein matrices, :func:`~course_lib.geometry.sampling.segment_arc_lengths`), and
+    Bernstein matrices, :func:`~course_lib.geometry.arc_length.segment_arc_lengths`), and
     linearly in the parameter between them -- for live widgets; the joints stay exact.
     """
     if x not in ("arc_length", "parameter"):

@@ -17,14 +17,16 @@ from hypothesis import strategies as st
 from scipy.interpolate import BSpline
 
 from course_lib.constructions.beta_splines import (
-    _cubic_points,
-    _cubic_polygons_from,
     cubic_beta_spline,
     cubic_beta_spline_basis,
     design_beta_spline,
     gn_beta_spline_basis,
     quadratic_beta_spline,
     quadratic_beta_spline_basis,
+)
+from course_lib.constructions.beta_splines.quadratic_cubic import (
+    _cubic_points,
+    _cubic_polygons_from,
 )
 from course_lib.curves.curve import PiecewiseBezier
 

@@ -10,7 +10,8 @@ import numpy as np
 import pytest
 from scipy.interpolate import BSpline
 
-from course_lib.constructions.beta_splines import MAX_BASIS_ORDER, beta_spline, gn_beta_spline_basis
+from course_lib.constructions.beta_splines import beta_spline, gn_beta_spline_basis
+from course_lib.constructions.beta_splines.degree_n import MAX_BASIS_ORDER
 from course_lib.curves.curve import PiecewiseBezier
 from course_lib.geometry.beta_constraints import (
     MAX_SYMBOLIC_ORDER,

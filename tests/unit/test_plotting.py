@@ -619,7 +619,7 @@ def test_cached_bernstein_samples_agree_with_the_math_layer():
 
 
 def test_fast_arc_lengths_against_scipy_quadrature():
-    from course_lib.geometry.sampling import segment_arc_lengths
+    from course_lib.geometry.arc_length import segment_arc_lengths
 
     n, idx = 16, np.array([0, 3, 6, 9, 12, 15])
     S = segment_arc_lengths(KNOTTED, n, idx)

@@ -143,7 +143,7 @@ check("hw04.q3", answer_q3)
 # `(m,)`) returning the $m - 1$ Bézier polygons as an array of shape `(m - 1, 3, 2)`.
 #
 # **You may use:** numpy (and plain Python); no function of `course_lib`.
-# `course_lib.constructions.beta_splines.quadratic_beta_spline` does it for you, so it raises while your
+# `course_lib.constructions.beta_splines.quadratic_cubic.quadratic_beta_spline` does it for you, so it raises while your
 # function is checked or graded.
 
 # %%

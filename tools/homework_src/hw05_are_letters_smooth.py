@@ -104,7 +104,7 @@ check("hw05.q1", answer_q1)
 # assume $A \ne B$ and $P_0 \ne P_2$.
 #
 # **You may use:** numpy (and plain Python); no function of `course_lib`.
-# `course_lib.constructions.outlines.classify_joints`, `course_lib.geometry.continuity.joint_continuity`,
+# `course_lib.constructions.outlines.classification.classify_joints`, `course_lib.geometry.continuity.joint_continuity`,
 # `course_lib.geometry.continuity.curve_continuity` do it for you, so they raise while your function is
 # checked or graded.
 

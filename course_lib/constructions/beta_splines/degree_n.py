@@ -23,7 +23,7 @@ it applies the chain rule to the derivatives at ``u = 0`` and equates them to th
 ``u = 1``, i.e. it swaps the roles of the two segments.  That system also produces a
 G^n spline, but its joints satisfy seed 000 eq. (7) with the shape parameters of the
 *inverse* change of variables (``1/β1``, ``-β2/β1³``, ...), not with the given ones
-(tests: ``tests/unit/test_higher_order.py::test_seed_eq_2_10_gives_inverse_betas``).
+(tests: ``tests/unit/test_beta_splines_degree_n.py::test_seed_eq_2_10_gives_inverse_betas``).
 The seed's eq. (2.9) for the C^3 B-spline is correct as printed.
 
 With ``β1 = 1, β2 = ... = βn = 0`` the basis is the uniform B-spline of degree

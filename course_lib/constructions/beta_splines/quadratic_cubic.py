@@ -274,7 +274,7 @@ def quadratic_beta_spline(V: np.ndarray, beta1: float | np.ndarray = 1.0) -> Pie
         Fewer than 3 points, β1 <= 0 or wrong length (naming the joint), coincident
         consecutive control points (zero tangent at a junction).
     """
-    own_work.require("course_lib.constructions.beta_splines.quadratic_beta_spline")
+    own_work.require("course_lib.constructions.beta_splines.quadratic_cubic.quadratic_beta_spline")
     P = as_points(V, "V", min_points=3)
     m = P.shape[0] - 1
     b1 = _per_site(beta1, "beta1", m, m - 2, "leg V_i V_(i+1)", 1.0, True)
@@ -326,7 +326,7 @@ def cubic_beta_spline(
         whose ratio sums to zero (Barsky's ``δ = 0``, a true pole); γ undefined at both
         ends of a leg with different β1 (no limit); a zero tangent at a junction vertex.
     """
-    own_work.require("course_lib.constructions.beta_splines.cubic_beta_spline")
+    own_work.require("course_lib.constructions.beta_splines.quadratic_cubic.cubic_beta_spline")
     P = as_points(V, "V", min_points=4)
     m = P.shape[0] - 1
     b1 = _per_site(beta1, "beta1", m + 1, m - 3, "control vertex", 1.0, True)

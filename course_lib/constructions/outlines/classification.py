@@ -137,7 +137,7 @@ def classify_joints(
     -------
     JointTable
     """
-    own_work.require("course_lib.constructions.outlines.classify_joints")
+    own_work.require("course_lib.constructions.outlines.classification.classify_joints")
     if not isinstance(outline, Outline):
         raise TypeError(f"outline must be an Outline, got {type(outline).__name__}")
     corner_angle = check_finite_scalar(corner_angle, "corner_angle")

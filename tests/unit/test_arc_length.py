@@ -20,8 +20,8 @@ from hypothesis import strategies as st
 import course_lib.geometry.arc_length as bl
 from course_lib.curves.bezier import subdivide
 from course_lib.curves.curve import PiecewiseBezier
+from course_lib.geometry.arc_length import integrate_speed
 from course_lib.geometry.differential_geometry import (
-    _integrate_speed,
     arc_length,
     cumulative_arc_length,
     parameter_at_arc_length,
@@ -163,13 +163,11 @@ def test_two_agreeing_rules_are_not_enough():
 def test_robust_path_alone_matches_mpmath(monkeypatch):
     """The graded mesh certifies every case here; the adaptive bisection behind it is
     checked on its own by forcing the graded mesh to refuse."""
-    import course_lib.geometry.differential_geometry as dg
-
     def no_bisection(*args, **kwargs):
         raise AssertionError("the graded mesh should have certified this segment")
 
     with monkeypatch.context() as mp:
-        mp.setattr(dg, "_integrate_speed", no_bisection)
+        mp.setattr(bl, "integrate_speed", no_bisection)
         for P in [*EASY.values(), *HARD.values()]:
             exact = reference_length(P)
             assert abs(bl.robust_length(np.asarray(P, float)) - exact) <= 1e-14 * exact
@@ -185,7 +183,7 @@ def test_spline_lengths_are_the_sum_of_the_segments_and_match_the_general_path(r
     curve = PiecewiseBezier(segs, knots=np.cumsum(rng.uniform(0.5, 2.0, 31)))
     fast = arc_length(curve)
     k = curve.knots
-    general = float(_integrate_speed(curve, k[:-1], k[1:]).sum())
+    general = float(integrate_speed(curve, k[:-1], k[1:]).sum())
     assert fast == pytest.approx(general, rel=1e-12)
     assert arc_length(curve, k[0], k[-1]) == fast  # explicit ends take the same path
     assert arc_length(curve, k[-1], k[0]) == -fast

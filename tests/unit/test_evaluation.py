@@ -1,9 +1,9 @@
 """Tests of the fast evaluation paths of PiecewiseBezier.evaluate and bezier.bernstein_matrix.
 
 ``PiecewiseBezier.evaluate`` uses a cached two-sided Taylor (power-basis) form with
-Horner's rule for hodographs of degree <= ``_TAYLOR_MAX_DEGREE`` and the Bernstein
+Horner's rule for hodographs of degree <= ``TAYLOR_MAX_DEGREE`` and the Bernstein
 form above.  Independent references here: exact rational de Casteljau on the exact
-hodograph (``fractions.Fraction``), the Bernstein form (``_eval_located``, and
+hodograph (``fractions.Fraction``), the Bernstein form (``Evaluator.eval_located``, and
 ``course_lib.curves.bezier.evaluate``), the chain rule written out by hand, and the
 textbook Bernstein formula for ``bernstein_matrix``.
 """
@@ -20,11 +20,10 @@ from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from course_lib import PiecewiseBezier
-from course_lib.curves import bezier
-from course_lib.curves import curve as curve_module
+from course_lib.curves import bezier, evaluation
 from course_lib.curves.bezier import bernstein_matrix
 
-TOP = curve_module._TAYLOR_MAX_DEGREE
+TOP = evaluation.TAYLOR_MAX_DEGREE
 
 
 # ------------------------------------------------------------ exact reference
@@ -99,7 +98,7 @@ def test_taylor_form_matches_bernstein_form(degree, n):
     t = np.concatenate([t, knots])  # joints and ends too
     idx, u = c.locate(t)
     h = np.diff(knots)[idx][:, None]
-    bernstein_form = c._eval_located(idx, u, n) / h**n
+    bernstein_form = c.engine.eval_located(idx, u, n) / h**n
     scale = max(hodograph_scale(s, n) for s in c.segments) / np.diff(knots).min() ** n
     err = np.abs(c.evaluate(t, n) - bernstein_form).max() / scale
     assert err < 1e-13
@@ -109,8 +108,8 @@ def test_bernstein_fallback_above_the_taylor_degree():
     rng = np.random.default_rng(7)
     seg = rng.standard_normal((TOP + 4, 2))  # degree TOP + 3
     c = PiecewiseBezier([seg, seg[::-1]], knots=[0.0, 1.5, 2.0])
-    assert c._taylor(0) is None  # the Bernstein path is used
-    assert c._taylor(3) is not None  # the 3rd hodograph has degree TOP
+    assert c.engine.taylor(0) is None  # the Bernstein path is used
+    assert c.engine.taylor(3) is not None  # the 3rd hodograph has degree TOP
     u = np.linspace(0.0, 1.0, 9)[:-1]
     for n in range(5):
         np.testing.assert_allclose(
@@ -201,7 +200,7 @@ def test_unit_knot_path_equals_search_path():
     rng = np.random.default_rng(3)
     c = random_curve(rng, [3, 3, 4, 2, 3, 3])
     shifted = c.with_knots(c.knots + 0.25)  # same spacing, not the default knots
-    assert c._halves()[3] and not shifted._halves()[3]
+    assert c.engine.halves()[3] and not shifted.engine.halves()[3]
     t = rng.uniform(0.0, 6.0, 2000)
     t[:7] = np.arange(7)  # every joint and both ends
     for n in range(4):
@@ -233,15 +232,15 @@ def test_knot_scaling_follows_the_chain_rule():
 def test_long_unsorted_input_crosses_chunks():
     rng = np.random.default_rng(6)
     c = random_curve(rng, [3] * 10, knots=np.cumsum(rng.uniform(0.5, 2.0, 11)))
-    m = 2 * curve_module._CHUNK + 17
+    m = 2 * evaluation.CHUNK + 17
     t = rng.uniform(*c.domain, m)
     for n in (0, 2):
         whole = c.evaluate(t, n)
         idx, u = c.locate(t)
         h = np.diff(c.knots)[idx][:, None]
-        np.testing.assert_allclose(whole, c._eval_located(idx, u, n) / h**n, rtol=1e-12, atol=1e-9)
+        np.testing.assert_allclose(whole, c.engine.eval_located(idx, u, n) / h**n, rtol=1e-12, atol=1e-9)
         # the pieces evaluated separately give the same numbers
-        cut = curve_module._CHUNK + 3
+        cut = evaluation.CHUNK + 3
         np.testing.assert_array_equal(
             whole, np.vstack([c.evaluate(t[:cut], n), c.evaluate(t[cut:], n)])
         )

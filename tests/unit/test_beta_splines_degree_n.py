@@ -17,11 +17,11 @@ from scipy.interpolate import BSpline
 
 from course_lib.constructions.beta_splines import (
     BetaSplineBasis,
-    _solve,
     beta_spline,
     gn_beta_spline_basis,
     quartic_beta_spline,
 )
+from course_lib.constructions.beta_splines.degree_n import _solve
 
 
 @pytest.mark.parametrize("n", [1, 2, 3, 4])
