@@ -17,6 +17,11 @@ parameter carry the chain-rule factor ``(t_{i+1} - t_i)^{-n}``.
 
 Lesson: ``notebooks/01_reparametrization.ipynb`` (piecewise curves and joints),
 ``notebooks/04_g1_knot_bezier_splines.ipynb`` (the global parameter).
+
+Why this module is long: it is the façade of the one curve type -- construction and
+validation, the accessors every other module reads, the local and global parameters -- and
+its methods are documented where they are; the evaluation engine is already apart
+(:mod:`course_lib.curves.evaluation`).
 """
 
 from __future__ import annotations

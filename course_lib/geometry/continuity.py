@@ -43,6 +43,10 @@ For a :class:`~course_lib.curves.curve.PiecewiseBezier`, :func:`curve_continuity
 *global* parameter (knots): the knots change the C-order but never the G-order.
 
 Lesson: ``notebooks/02_beta_constraints.ipynb`` (the three characterizations agree).
+
+Why this module is long: the report type (text and HTML), the three characterizations of
+G-order and the vectorised report of a whole curve share one tolerance rule and are read
+together.
 """
 
 from __future__ import annotations

@@ -21,6 +21,10 @@ Every function accepts any object of the parametrization protocol (``CONTRIBUTIN
 Where a formula divides by ``|c'|`` and ``c'`` vanishes, a ``ValueError`` says so.
 
 Lesson: ``notebooks/03_curvature_of_plane_curves.ipynb`` (unit tangent, signed curvature, fundamental theorem).
+
+Why this module is long: the formulas of seed 004 §19.2-19.3 (frame, curvature, arc-length
+derivatives, the curve from its curvature) share one regularity rule and one parameter
+check; the quadrature engine is already apart (:mod:`course_lib.geometry.arc_length`).
 """
 
 from __future__ import annotations

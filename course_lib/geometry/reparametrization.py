@@ -19,6 +19,9 @@ Derivative vectors are not intrinsic (they change under reparametrization); the 
 tangent and the curvature are (seed 000 §4).
 
 Lesson: ``notebooks/01_reparametrization.ipynb``.
+
+Why this module is long: changes of variables, reparametrized curves, Faà di Bruno and the
+equivalence test are one idea (seed 000 §4) whose pieces call each other.
 """
 
 from __future__ import annotations

@@ -34,6 +34,9 @@ note, exactly like a failed ``assert``.
 
 This module knows no expected value and no mathematics of the course: hidden tests may import
 it (and only it) from ``course_lib``.
+
+Why this module is long: the readers are one table of normalizers shared by the checks and
+the hidden tests; in several modules the two could drift apart.
 """
 
 from __future__ import annotations

@@ -41,6 +41,9 @@ in it -- a notebook that replaces the probe, ``__import__`` or this module's own
 before the evaluation can call the library unguarded, and
 one that hides ``HOMEWORK`` (or computes in a thread) while it computes a value;
 copying a function's source text out of ``course_lib`` is copying, as from a book.
+
+Why this module is long: the guard and its tables are read together: the tables name what
+the guard protects.
 """
 
 from __future__ import annotations

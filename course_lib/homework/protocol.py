@@ -24,6 +24,9 @@ TEXT}`` with KIND one of ``missing``, ``ellipsis``, ``not_implemented``, ``raise
 objects ``__ndarray__`` (with ``shape`` and ``kind``), ``__complex__``, ``__float__`` (nan/inf),
 ``__callable__``, ``__dict__`` and ``__sympy__`` (a string, for display only: the grader never
 parses it).
+
+Why this module is long: the wire format is one protocol (encoded in the student's kernel,
+decoded by the grader) and is audited as one file.
 """
 
 from __future__ import annotations

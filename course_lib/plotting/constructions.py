@@ -15,6 +15,9 @@
 The diagrams *read* the geometry (control points, ``curve.info``); they compute
 nothing but where to put labels.  All return a :class:`Diagram` whose ``update``
 moves every artist to new points (for widgets).
+
+Why this module is long: each construction diagram (stitching, Farin-Boehm, Beta-spline,
+knot joint) is one function with its labels, and they share the diagram type and its styles.
 """
 
 from __future__ import annotations

@@ -3,6 +3,9 @@
 Each function takes curves and points the lecture has already computed (no mathematics is
 done here), draws them in the course style and returns the figure.  The notebook cell that
 calls it is named in the docstring; the caption is the lecture's prose around that cell.
+
+Why this module is long: every lecture figure is a one-line call the lectures import from
+here; each function is short.
 """
 
 from __future__ import annotations

@@ -15,6 +15,9 @@
 The math is called, never written here: every curve comes from the construction the
 demo was given, every number from :mod:`course_lib.geometry.continuity` and
 :mod:`course_lib.geometry.differential_geometry`.
+
+Why this module is long: state, figure and widget assembly still live together here (they
+are split apart in the 'tools' helper's branch of session 30).
 """
 
 from __future__ import annotations

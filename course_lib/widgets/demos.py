@@ -15,6 +15,9 @@ an initial value outside its slider's range with a ``ValueError`` naming the ran
 (never silently clamped); slider ranges never allow an invalid value (β1 > 0, knots
 kept in order); a degenerate configuration reached by dragging shows a warning in the
 report instead of raising.
+
+Why this module is long: one function per demo, each wiring its sliders to one construction
+through the shared demo assembly.
 """
 
 from __future__ import annotations

@@ -34,6 +34,10 @@ With β1 = 1 (and β2 = 0) both reduce to the uniform quadratic / cubic B-spline
 (test against scipy.interpolate.BSpline).
 
 Lesson: ``notebooks/06_beta_splines.ipynb``.
+
+Why this module is long: the quadratic and the cubic constructions share their per-site
+shape parameters, leg weights and junction vertices, and their basis functions are read off
+the constructions themselves.
 """
 
 from __future__ import annotations
