@@ -49,7 +49,7 @@ from typing import Any
 
 import numpy as np
 
-from course_lib.homework import protocol as _probe
+from course_lib.homework import protocol
 from course_lib.homework.protocol import FunctionMarker, SymbolicText
 
 __all__ = [
@@ -140,15 +140,15 @@ def plain(value: object, name: str = "your answer") -> Any:
     if is_unanswered(value):
         raise AnswerError(NOT_ANSWERED, unanswered=True)
     try:
-        encoded = _probe.encode(value)
+        encoded = protocol.encode(value)
         text = json.dumps(encoded, allow_nan=False)
-    except _probe.Unsupported as exc:
+    except protocol.Unsupported as exc:
         raise AnswerError(f"{name}: {exc} -- use numbers, lists or numpy arrays.") from None
     except Exception as exc:
         raise AnswerError(f"{name} cannot be read as data ({type(exc).__name__}).") from None
     try:
-        return _probe.decode(json.loads(text))  # the grader's own (strict) decoder
-    except _probe.Malformed as exc:
+        return protocol.decode(json.loads(text))  # the grader's own (strict) decoder
+    except protocol.Malformed as exc:
         raise AnswerError(f"{name} cannot be read as data ({exc}).") from None
 
 
@@ -346,8 +346,8 @@ def choice(value: object, options: str, name: str = "your answer", *, single: bo
 
 def _decode_number(v: Any) -> complex:
     try:
-        z = _probe.decode_number(v)
-    except _probe.Malformed:
+        z = protocol.decode_number(v)
+    except protocol.Malformed:
         z = None
     if isinstance(z, bool) or not isinstance(z, (int, float, complex)):
         raise AnswerError("the expression's values could not be read")
@@ -364,13 +364,13 @@ def evaluate(
     is ``None`` when the answer has symbols outside ``symbols``.
     """
     _not_missing(value, name)
-    from course_lib.homework import protocol as _probe
+    from course_lib.homework import protocol
 
     pts = [[float(x) for x in p] for p in np.atleast_2d(np.asarray(points, dtype=float))]
     try:
-        raw = _probe._evaluate_expression(value, [str(s) for s in symbols], pts)
+        raw = protocol.evaluate_expression(value, [str(s) for s in symbols], pts)
         raw = json.loads(json.dumps(raw, allow_nan=False))
-    except _probe.Unsupported as exc:
+    except protocol.Unsupported as exc:
         raise AnswerError(str(exc)) from None
     values = raw["values"]
     return list(raw["symbols"]), None if values is None else [_decode_number(v) for v in values]

@@ -252,7 +252,7 @@ def _as_sympy(value: Any):
         ) from None
 
 
-def _evaluate_expression(value: Any, symbols: list, points: list) -> dict:
+def evaluate_expression(value: Any, symbols: list, points: list) -> dict:
     """Free symbol names of ``value`` and (if they are among ``symbols``) its values at ``points``.
 
     Used by :func:`handle` for the grader and by ``course_lib.homework.answers.evaluate`` for the
@@ -320,7 +320,7 @@ def handle(request: dict, namespace: dict) -> dict:
         if op == "expr":
             symbols = [str(s) for s in request.get("symbols", [])]
             points = [[float(x) for x in p] for p in request.get("points", [])]
-            return {"ok": True, "value": _evaluate_expression(value, symbols, points)}
+            return {"ok": True, "value": evaluate_expression(value, symbols, points)}
         return _fail("bad_request", f"unknown op {op!r}")
     except Unsupported as exc:
         return _fail("unsupported", str(exc))
