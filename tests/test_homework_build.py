@@ -129,7 +129,7 @@ def test_hidden_tests_are_independent_of_course_lib(hidden):
     text = hidden.read_text(encoding="utf-8")
     imports = re.findall(r"^\s*(from\s+\S+\s+import\s+[^\n]+|import\s+\S+)", text, flags=re.MULTILINE)
     from_course_lib = [m for m in imports if "course_lib" in m]
-    assert from_course_lib == ["from course_lib import answers"], from_course_lib
+    assert from_course_lib == ["from course_lib.homework import answers"], from_course_lib
     for forbidden in ("sympify", "parse_expr", "eval(", "exec(", "import sympy", "lambdify"):
         assert forbidden not in text, f"{hidden.name} must not use {forbidden}: student text is data"
     module = load(f"hidden_{hidden.stem}", hidden)

@@ -64,12 +64,12 @@ LAZY = {
         lambda impl, V, b1, b2: impl(V, b1, b2),
     ),
     "hw04.q4": (
-        "course_lib.constructions.beta_splines",
+        "course_lib.constructions.beta_splines.quadratic_cubic",
         "quadratic_beta_spline",
         lambda impl, V, b: np.array(impl(V, b).segments),
     ),
     "hw05.q2": (
-        "course_lib.constructions.outlines",
+        "course_lib.constructions.outlines.classification",
         "classify_joints",
         lambda impl, P0, A, B, P2: bool(impl(_outline_of(P0, A, B, P2)).kind[1] == "G2"),
     ),

@@ -202,7 +202,7 @@ _VALUES = (
         "geometry.differential_geometry.arc_length",
         "geometry.differential_geometry.cumulative_arc_length",
         "geometry.differential_geometry.parameter_at_arc_length",
-        "geometry.differential_geometry._integrate_speed",
+        "geometry.arc_length.integrate_speed",
         "geometry.arc_length.segment_length",
         "geometry.arc_length.segment_lengths",
         "geometry.arc_length.robust_length",
