@@ -38,7 +38,7 @@ from course_lib import PiecewiseBezier
 from course_lib.constructions.beta_splines import cubic_beta_spline
 from course_lib.constructions.outlines import Contour, Outline, classify_joints, glyph_outline
 from course_lib.homework import variants
-from course_lib.homework.checks import _variants_hw05 as gen
+from course_lib.homework.checks import hw05 as gen
 from course_lib.homework.checks import check
 
 HOME = VariantHomework("hw05")
