@@ -236,15 +236,10 @@ class Evaluator:
             table.setflags(write=False)
             return table
         table = np.zeros((top + 1, self.dim, 2 * self.n_segments))
-        groups: dict[int, list[int]] = {}
-        for i, d in enumerate(self.degrees):
-            groups.setdefault(d, []).append(i)
-        for d, members in groups.items():
+        for d, idx, _rows, Q in self.segments_by_degree(0):  # Q: (G, d + 1, dim)
             e = d - n
             if e < 0:  # derivative order above the degree: the zero polynomial
                 continue
-            idx = np.array(members)
-            Q = np.stack([self.segments[i] for i in members])  # (G, d + 1, dim)
             C = np.matmul(taylor_matrix(d, n), Q) * scale[idx][:, None, None]
             table[: e + 1, :, 2 * idx] = C[:, : e + 1].transpose(1, 2, 0)
             table[: e + 1, :, 2 * idx + 1] = C[:, e + 1 :].transpose(1, 2, 0)
