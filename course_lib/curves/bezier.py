@@ -180,14 +180,9 @@ def end_derivatives(control_points: np.ndarray, n: int, end: int = 1) -> np.ndar
 
 
 def end_derivative_points(P: np.ndarray, n: int, end: int) -> np.ndarray:
-    """:func:`end_derivatives` without checks: ``P`` a float ``(d + 1, dim)`` array."""
-    out = np.zeros((n + 1, P.shape[1]))
-    for k in range(n + 1):
-        Q = derivative_points(P, k)
-        out[k] = Q[-1] if end == 1 else Q[0]
-        if k > P.shape[0] - 1:
-            out[k] = 0.0
-    return out
+    """:func:`end_derivatives` without checks: ``P`` a float ``(d + 1, dim)`` array (or a stack
+    ``(S, d + 1, dim)``), through :func:`end_derivative_matrix`."""
+    return end_derivative_matrix(P.shape[-2] - 1, n, end) @ P
 
 
 @lru_cache(maxsize=128)

@@ -533,12 +533,12 @@ def bezier_piece_lengths(curve: PiecewiseBezier, a: np.ndarray, b: np.ndarray) -
     u1[b >= k[seg + 1]] = 1.0
     if curve.uniform_array is not None:
         return piece_lengths(curve.uniform_array[seg], u0, u1)
-    degrees = np.array(curve.degrees)[seg]
     out = np.empty(a.size)
-    for d in np.unique(degrees):  # one vectorized call per degree present
-        m = degrees == d
-        P = np.stack([curve.segments[i] for i in seg[m].tolist()])
-        out[m] = piece_lengths(P, u0[m], u1[m])
+    for _d, _idx, rows, points in curve.segments_by_degree(0):  # one call per degree present
+        r = rows[seg]
+        m = r >= 0
+        if m.any():
+            out[m] = piece_lengths(points[r[m]], u0[m], u1[m])
     return out
 
 

@@ -9,6 +9,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from course_lib.constructions.outlines.contours import Outline
+from course_lib.curves.bezier import end_derivative_matrix
 from course_lib.homework import own_work
 from course_lib.validation import check_finite_scalar
 
@@ -90,11 +91,10 @@ def _end_data(segs: list[np.ndarray]):
         idx = np.flatnonzero(degrees == d)
         P = np.stack([segs[i] for i in idx])  # (m, d+1, 2)
         out["p0"][idx], out["p1"][idx] = P[:, 0], P[:, -1]
-        out["a1"][idx] = d * (P[:, 1] - P[:, 0])
-        out["b1"][idx] = d * (P[:, -1] - P[:, -2])
-        if d >= 2:
-            out["a2"][idx] = d * (d - 1) * (P[:, 2] - 2 * P[:, 1] + P[:, 0])
-            out["b2"][idx] = d * (d - 1) * (P[:, -1] - 2 * P[:, -2] + P[:, -3])
+        at0 = end_derivative_matrix(int(d), 2, 0) @ P  # (m, 3, 2): orders 0..2 at u = 0
+        at1 = end_derivative_matrix(int(d), 2, 1) @ P  # zero rows above the degree
+        out["a1"][idx], out["a2"][idx] = at0[:, 1], at0[:, 2]
+        out["b1"][idx], out["b2"][idx] = at1[:, 1], at1[:, 2]
         scale[idx] = d * np.ptp(P, axis=1).max(axis=1)
         # Geometric tangent: the first non-zero difference from each end.
         ta = P[:, 1:] - P[:, :1]
