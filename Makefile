@@ -69,7 +69,7 @@ grade: install
 # make submit HW=hw01 STUDENT=your-id   (runs the homework fresh, writes submissions/hw01-ID.ipynb)
 submit: install
 	@test -n "$(STUDENT)" || (echo "usage: make submit HW=hw01 STUDENT=your-id"; exit 2)
-	$(BIN)/python -m course_lib.submit "$(HW)" --student "$(STUDENT)"
+	$(BIN)/python -m course_lib.homework.submit "$(HW)" --student "$(STUDENT)"
 
 # make release: the student edition in dist/student-edition/ and dist/student-edition.zip
 release: install

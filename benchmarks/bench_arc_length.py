@@ -1,6 +1,6 @@
 """Item 2: arc length to 1e-12.
 
-``course_lib.differential_geometry.arc_length`` against ``scipy.integrate.quad`` on
+``course_lib.geometry.differential_geometry.arc_length`` against ``scipy.integrate.quad`` on
 the speed function (``epsabs=0, epsrel=1e-12, limit=200``; the speed is a plain
 Python function of the hodograph polynomial, the fastest integrand a user would
 write).  Both errors are measured against mpmath's tanh-sinh quadrature at 40
@@ -84,7 +84,7 @@ def _row(name, curve, segments, arc_length, sizes, repeats, note=""):
 def bezier_rows(sizes: Sizes) -> list[Result]:
     """course_lib vs ``bezier.Curve(nodes, degree=3).length`` on CUBIC and NEAR_CUSP."""
     from course_lib import PiecewiseBezier
-    from course_lib.differential_geometry import arc_length
+    from course_lib.geometry.differential_geometry import arc_length
 
     names = ("arc length of one cubic", "arc length of a near-cusp cubic")
     bezier = optional_module("bezier")
@@ -125,7 +125,7 @@ def bezier_rows(sizes: Sizes) -> list[Result]:
 
 def run(sizes: Sizes) -> list[Result]:
     try:
-        from course_lib.differential_geometry import arc_length
+        from course_lib.geometry.differential_geometry import arc_length
     except ImportError as exc:
         return [Result("2", "arc length of a cubic", note=f"TODO: {exc}")]
     from bench_evaluation import build_curves

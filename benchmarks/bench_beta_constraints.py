@@ -1,6 +1,6 @@
 """Item 3: symbolic Beta-constraints of orders n = 1..8 and 10 (sympy).
 
-Timed: ``course_lib.beta_constraints.beta_constraints(n)``, which derives the
+Timed: ``course_lib.geometry.beta_constraints.beta_constraints(n)``, which derives the
 constraints by differentiating ``q(u(t))`` with sympy for n <= 6 and, above, takes the
 fast path through sympy's partial Bell polynomials (``method="auto"``; the unit tests
 check both paths give the same matrices).  Every repeat starts cold:
@@ -55,7 +55,7 @@ def measure(orders: tuple[int, ...], repeats: int, cpu: bool = False) -> dict:
 
     clock = time.process_time if cpu else time.perf_counter
 
-    from course_lib import beta_constraints as bc
+    from course_lib.geometry import beta_constraints as bc
 
     ours: dict[int, list[float]] = {n: [] for n in orders}
     ref: dict[int, list[float]] = {n: [] for n in orders}
@@ -79,7 +79,7 @@ def measure(orders: tuple[int, ...], repeats: int, cpu: bool = False) -> dict:
 
 def run(sizes: Sizes, in_process: bool = False) -> list[Result]:
     try:
-        import course_lib.beta_constraints as bc
+        import course_lib.geometry.beta_constraints as bc
     except ImportError as exc:
         return [Result("3", "Beta-constraints", note=f"TODO: module missing ({exc})")]
     if not hasattr(bc, "beta_constraints"):

@@ -43,7 +43,7 @@ def direct_g2(P: np.ndarray, Q: np.ndarray, hq: float = 1.0, hr: float = 1.0) ->
 
 
 def _curve():
-    from course_lib.beta_splines import cubic_beta_spline
+    from course_lib.constructions.beta_splines import cubic_beta_spline
 
     V = np.random.default_rng(0).normal(size=(12, 2))
     return cubic_beta_spline(V, 1.3, 0.7)
@@ -52,8 +52,8 @@ def _curve():
 def joint_report(curve, j: int, max_order: int):
     """What ``course_lib.widgets._core.joint_report`` does on every frame (without importing
     the widget stack): build the two-segment curve around joint ``j`` and report it."""
-    from course_lib.continuity import curve_continuity
-    from course_lib.curve import PiecewiseBezier
+    from course_lib.curves.curve import PiecewiseBezier
+    from course_lib.geometry.continuity import curve_continuity
 
     k = curve.knots
     pair = PiecewiseBezier(curve.segments[j : j + 2], k[j : j + 3] if curve.has_knots else None)
@@ -61,7 +61,7 @@ def joint_report(curve, j: int, max_order: int):
 
 
 def run(sizes: Sizes) -> list[Result]:
-    from course_lib.continuity import curve_continuity
+    from course_lib.geometry.continuity import curve_continuity
 
     c = _curve()
     segs = c.segments

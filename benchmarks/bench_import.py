@@ -27,9 +27,10 @@ from bench_common import REPO, Result, Sizes
 GOAL_SECONDS = 0.150
 HEAVY = ("sympy", "matplotlib", "ipywidgets", "scipy")
 MATH_SUBMODULES = (
-    "bezier", "curve", "differential_geometry", "reparametrization", "beta_constraints",
-    "continuity", "stitching", "catmull_rom", "beta_splines", "knot_splines", "higher_order",
-    "surfaces",
+    "curves.bezier", "curves.curve", "geometry.differential_geometry",
+    "geometry.reparametrization", "geometry.beta_constraints", "geometry.continuity",
+    "constructions.stitching", "constructions.catmull_rom", "constructions.beta_splines",
+    "constructions.knot_splines", "constructions.surfaces",
 )
 
 
@@ -47,7 +48,11 @@ def _env() -> dict[str, str]:
 
 
 def existing_math_submodules() -> list[str]:
-    return [m for m in MATH_SUBMODULES if (REPO / "course_lib" / f"{m}.py").exists()]
+    def exists(m: str) -> bool:
+        path = REPO / "course_lib" / m.replace(".", "/")
+        return path.with_suffix(".py").exists() or (path / "__init__.py").exists()
+
+    return [m for m in MATH_SUBMODULES if exists(m)]
 
 
 def _importtime(statement: str, prefix: str) -> float:

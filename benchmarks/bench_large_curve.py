@@ -28,7 +28,7 @@ def data(S: int):
 def run(sizes: Sizes, S: int | None = None) -> list[Result]:
     from scipy.interpolate import BSpline
 
-    from course_lib.curve import PiecewiseBezier
+    from course_lib.curves.curve import PiecewiseBezier
 
     S = S or (10**5 if sizes.name != "tiny" else 2000)
     V, segs, knots = data(S)

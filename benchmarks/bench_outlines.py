@@ -1,6 +1,6 @@
 """Item 7: classify every joint of every glyph of DejaVu Sans (lecture 09).
 
-``course_lib.outlines.font_summary`` reads each glyph (fontTools, implied on-curve
+``course_lib.constructions.outlines.font_summary`` reads each glyph (fontTools, implied on-curve
 points made explicit) and classifies all its joints with the vectorized classifier.
 Reference: the course's continuity report (``joint_continuity``, three
 characterizations per joint), timed on a sample of joints and scaled to the font's
@@ -22,7 +22,7 @@ SAMPLE_JOINTS = {"full": 400, "quick": 100, "tiny": 20}
 
 def _report_per_joint(outlines, n_joints: int) -> float:
     """Seconds per joint of the continuity report over the first ``n_joints`` joints."""
-    from course_lib.continuity import joint_continuity
+    from course_lib.geometry.continuity import joint_continuity
 
     pairs = []
     for out in outlines:
@@ -46,7 +46,7 @@ def _report_per_joint(outlines, n_joints: int) -> float:
 
 
 def run(sizes: Sizes) -> list[Result]:
-    from course_lib.outlines import font_glyph_names, font_summary, glyph_outline
+    from course_lib.constructions.outlines import font_glyph_names, font_summary, glyph_outline
 
     names = font_glyph_names("DejaVuSans")
     limit = GLYPHS.get(sizes.name, 1000)

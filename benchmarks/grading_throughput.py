@@ -43,7 +43,7 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--variants", action="store_true", help="grade with a course secret")
     args = p.parse_args(argv)
     sys.path.insert(0, str(ROOT))
-    from course_lib import variants
+    from course_lib.homework import variants
 
     secret = b"the benchmark's course secret, 32"
     solution = next((ROOT / "solutions").glob(f"{args.hw}_*.ipynb"))

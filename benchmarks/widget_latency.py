@@ -101,13 +101,13 @@ def measure(
     import matplotlib
 
     matplotlib.use("Agg")
-    from course_lib.beta_splines import cubic_beta_spline
-    from course_lib.plotting.curvature import comb_teeth, curvature_profile
-    from course_lib.sampling import (
+    from course_lib.constructions.beta_splines import cubic_beta_spline
+    from course_lib.geometry.sampling import (
         point_derivatives,
         segment_samples,
         tangent_and_curvature,
     )
+    from course_lib.plotting.curvature import comb_teeth, curvature_profile
     from course_lib.widgets import CurveDemoView, beta_spline_demo, joint_report
 
     P = control_polygon(segments)

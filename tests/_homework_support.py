@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from course_lib import variants
+from course_lib.homework import variants
 from tools import build_homework as build
 from tools.grading.protocol import LocalStudent, run_question
 

@@ -26,8 +26,8 @@ from _homework_support import load
 
 matplotlib.use("Agg")
 
-from course_lib import answers, variants
-from course_lib.checks import HOMEWORKS, check, questions, registry
+from course_lib.homework import answers, variants
+from course_lib.homework.checks import HOMEWORKS, check, questions, registry
 from tools import build_homework as build
 from tools.grading.protocol import LocalStudent, run_question
 
@@ -638,7 +638,7 @@ def test_the_check_and_the_grader_read_the_same_plain_data():
     """``answers.plain`` (check side) == the protocol's decoding (grader side), type and value."""
     import json
 
-    from course_lib import _probe
+    from course_lib.homework import protocol as _probe
     from tools.grading.protocol import decode_value
 
     values = [

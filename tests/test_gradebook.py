@@ -18,7 +18,7 @@ from pathlib import Path
 import nbformat
 import pytest
 
-from course_lib.submit import manifest_of, notebook_digest, submit
+from course_lib.homework.submit import manifest_of, notebook_digest, submit
 from tools import grade
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -225,7 +225,7 @@ def test_summary_flags_a_question_whose_variants_differ_in_difficulty():
 
 def test_hw01_variant_kinds_name_the_right_option():
     """The q3 label of a variant is the letter the hidden test grades as right."""
-    from course_lib import variants
+    from course_lib.homework import variants
 
     hidden = grade.HiddenTests.load(HIDDEN)
     module = {}

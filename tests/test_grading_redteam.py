@@ -50,7 +50,7 @@ SECRET = b"the red team's course secret, 32b"
 
 def _solution_for(student: str) -> nbformat.NotebookNode:
     """The solution notebook as ``student`` hands it in: done with their own variant code."""
-    from course_lib import variants
+    from course_lib.homework import variants
 
     nb = nbformat.read(SOLUTION, as_version=4)
     code = variants.code_for(SECRET, "hw01", student)

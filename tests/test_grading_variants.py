@@ -15,7 +15,7 @@ import nbformat
 import pytest
 from _homework_support import differ, load
 
-from course_lib import variants
+from course_lib.homework import variants
 from tools import grade
 
 ROOT = Path(__file__).resolve().parents[1]

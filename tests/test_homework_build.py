@@ -4,14 +4,14 @@
   ``tools/homework_src/`` (so the two copies never drift apart);
 * a student copy contains no solution text, and no hidden test content lives in exercises/ or
   in course_lib/ (hidden tests live in solutions/hidden_tests/ only);
-* hidden tests use nothing of course_lib but ``course_lib.answers`` (the answer normalizers they
+* hidden tests use nothing of course_lib but ``course_lib.homework.answers`` (the answer normalizers they
   share with the feedback checks, which hold no mathematics): their expected values must be
   independent of the code the solution notebooks call; they take the ``qN(student)`` form and
   never parse student text (no sympify / parse_expr / eval);
 * every notebook has a title, a how-to, a Preparations cell setting ``HOMEWORK``, a check cell
   per question, a check-all cell as its last code cell, and ends with the "Hand in" section;
 * one source, one checks module and one hidden-test file per homework (the list of homework is
-  derived from the files: ``course_lib.checks.HOMEWORKS``).
+  derived from the files: ``course_lib.homework.checks.HOMEWORKS``).
 """
 
 from __future__ import annotations
@@ -24,7 +24,7 @@ from pathlib import Path
 import pytest
 from _homework_support import load
 
-from course_lib.checks import HOMEWORKS, questions, registry
+from course_lib.homework.checks import HOMEWORKS, questions, registry
 from tools import build_homework as build
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -39,17 +39,17 @@ HIDDEN = sorted((ROOT / "solutions" / "hidden_tests").glob("hw*.py"))
 def test_one_source_per_homework():
     """Each homework hwNN has exactly one source, one checks module and one hidden-test file.
 
-    ``HOMEWORKS`` is derived from the modules ``course_lib/checks/hwNN.py``; the other two lists
+    ``HOMEWORKS`` is derived from the modules ``course_lib/homework/checks/hwNN.py``; the other two lists
     from the files, so nothing is registered by hand (``tools/new_homework.py`` writes all three).
     """
     sources = [s.stem[:4] for s in SOURCES]
     assert sources == list(HOMEWORKS), (
-        f"tools/homework_src/ has sources for {sources}, course_lib/checks/ has modules for "
+        f"tools/homework_src/ has sources for {sources}, course_lib/homework/checks/ has modules for "
         f"{list(HOMEWORKS)}: one source hwNN_<name>.py and one checks module hwNN.py per homework"
     )
     hidden = [h.stem for h in HIDDEN]
     assert hidden == list(HOMEWORKS), (
-        f"solutions/hidden_tests/ has {hidden}, course_lib/checks/ has {list(HOMEWORKS)}: "
+        f"solutions/hidden_tests/ has {hidden}, course_lib/homework/checks/ has {list(HOMEWORKS)}: "
         "one hidden-test file hwNN.py per homework"
     )
 
@@ -129,7 +129,7 @@ def test_hidden_tests_are_independent_of_course_lib(hidden):
     text = hidden.read_text(encoding="utf-8")
     imports = re.findall(r"^\s*(from\s+\S+\s+import\s+[^\n]+|import\s+\S+)", text, flags=re.MULTILINE)
     from_course_lib = [m for m in imports if "course_lib" in m]
-    assert from_course_lib == ["from course_lib import answers"], from_course_lib
+    assert from_course_lib == ["from course_lib.homework import answers"], from_course_lib
     for forbidden in ("sympify", "parse_expr", "eval(", "exec(", "import sympy", "lambdify"):
         assert forbidden not in text, f"{hidden.name} must not use {forbidden}: student text is data"
     module = load(f"hidden_{hidden.stem}", hidden)
@@ -159,11 +159,12 @@ def test_multiple_choice_is_feedback_only(hidden):
 
 
 def test_answers_module_knows_no_mathematics_of_the_course():
-    text = (ROOT / "course_lib" / "answers.py").read_text(encoding="utf-8")
+    text = (ROOT / "course_lib" / "homework" / "answers.py").read_text(encoding="utf-8")
     imports = re.findall(r"^\s*(?:from|import)\s+(\S+)", text, flags=re.MULTILINE)
-    allowed = {"course_lib", "course_lib._probe"}  # the wire format, nothing of the mathematics
+    # the wire format (and, for the default data, the variants), nothing of the mathematics
+    allowed = {"course_lib.homework", "course_lib.homework.protocol"}
     assert {m for m in imports if "course_lib" in m or m.startswith(".")} <= allowed
-    assert "from course_lib import _probe" in text  # the only piece of course_lib it uses
+    assert "from course_lib.homework import protocol" in text  # the wire format it reads
 
 
 @pytest.mark.parametrize("source", SOURCES, ids=lambda p: p.stem)
@@ -174,7 +175,7 @@ def test_notebook_layout(source, version):
     text = ["".join(c["source"]) for c in cells]
     assert cells[0]["cell_type"] == "markdown" and "\n# Homework" in "\n" + text[0]
     assert "How to work" in text[0] and "check cell" in text[0]
-    assert text[1].strip() == "## Preparations" and "from course_lib.checks import" in text[2]
+    assert text[1].strip() == "## Preparations" and "from course_lib.homework.checks import" in text[2]
     hw = source.stem[:4]
     for qid in questions(hw):
         name = registry()[qid].answer_name
@@ -184,7 +185,7 @@ def test_notebook_layout(source, version):
     assert "check_all(globals(), HOMEWORK)" in code[-1], "the last code cell must check everything"
     if version == "solution":
         assert "assert report.all_passed" in code[-1]
-    # the notebook ends with how to hand it in (course_lib.submit)
+    # the notebook ends with how to hand it in (course_lib.homework.submit)
     assert cells[-1]["cell_type"] == "markdown" and text[-1].startswith("## Hand in"), text[-1][:60]
     assert f"make submit HW={hw}" in text[-1] and f'submit("{source.stem}.ipynb"' in text[-1]
     for c in cells:
@@ -194,7 +195,7 @@ def test_notebook_layout(source, version):
 
 def test_the_example_variant_code_in_each_homework_is_a_valid_code():
     """A student who copies the example to see the format gets the format right (check character)."""
-    from course_lib import variants
+    from course_lib.homework import variants
 
     for src in sorted((ROOT / "tools" / "homework_src").glob("hw*.py")):
         examples = re.findall(r'e\.g\. VARIANT = "([^"]+)"', src.read_text())

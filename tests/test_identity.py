@@ -1,7 +1,7 @@
 """One identity per submission (issue 23): LMS naming, rosters from LMS exports, flags.
 
 Fast: no notebook is run.  The notebooks are two-cell stand-ins with a ``VARIANT`` and, where it
-matters, a real ``submit()``-style manifest (digest made by ``course_lib.submit``).
+matters, a real ``submit()``-style manifest (digest made by ``course_lib.homework.submit``).
 """
 
 from __future__ import annotations
@@ -15,8 +15,8 @@ from pathlib import Path
 import nbformat
 import pytest
 
-from course_lib import variants
-from course_lib.submit import MANIFEST_KEY, notebook_digest
+from course_lib.homework import variants
+from course_lib.homework.submit import MANIFEST_KEY, notebook_digest
 from tools import grade
 from tools.grading import identity, intake, reports
 

@@ -1,12 +1,12 @@
 """The lectures' answers, derived here independently, are the ones their checks accept.
 
 Multiple choice in a lecture is practice (CONTRIBUTING.md, "Lecture notebooks"): the notebook
-stores no answer and no hash of one, and :func:`course_lib.checks.lectures.quiz` checks the
+stores no answer and no hash of one, and :func:`course_lib.homework.checks.lectures.quiz` checks the
 letters.  This test works each right answer out from first principles (or the course's
 definitions), checks that ``quiz`` accepts exactly it among all letter sets, and that no
 lecture cell carries a hash-like string.  The code exercises (``check_number``,
 ``check_vector``) are answered by hand or by a route other than the one
-``course_lib.checks.lectures`` takes; each must accept that answer, reject typical wrong ones
+``course_lib.homework.checks.lectures`` takes; each must accept that answer, reject typical wrong ones
 and call a blank answer "not answered yet".
 """
 
@@ -38,8 +38,8 @@ def quiz_questions() -> set:
 
 
 def _quartic_c1_not_c2():
-    from course_lib.continuity import curve_continuity
-    from course_lib.higher_order import quartic_beta_spline
+    from course_lib.constructions.beta_splines import quartic_beta_spline
+    from course_lib.geometry.continuity import curve_continuity
 
     P = np.array([[0, 0], [1, 2.4], [3, 3], [4, 0.6], [6, 0.2], [7, 2.6], [9, 3], [10, 0.4]])
     reps = curve_continuity(quartic_beta_spline(P, 1, 100, 0), max_order=3)
@@ -113,7 +113,7 @@ def _letter_sets(letters: str):
 
 @pytest.mark.parametrize("qid", sorted(ANSWERS))
 def test_quiz_accepts_exactly_the_right_letters(qid):
-    from course_lib.checks.lectures import quiz
+    from course_lib.homework.checks.lectures import quiz
 
     letters, right = ANSWERS[qid]
     right = ", ".join(sorted(right().replace(",", " ").split()))
@@ -138,7 +138,7 @@ def test_no_lecture_stores_an_answer_hash(path):
 
 
 def test_the_question_table_hands_out_no_answers():
-    from course_lib.checks.lectures import LECTURE_QUESTIONS
+    from course_lib.homework.checks.lectures import LECTURE_QUESTIONS
 
     assert set(LECTURE_QUESTIONS.values()) <= {"number", "vector", "choice"}
     assert not any(callable(v) for v in LECTURE_QUESTIONS.values())
@@ -147,7 +147,7 @@ def test_the_question_table_hands_out_no_answers():
 
 # ------------------------------------------------ code exercises: check_number, check_vector
 # Every numeric or vector question of a lecture, answered here by hand or by a route other
-# than the one course_lib.checks.lectures takes, with typical wrong answers that must fail.
+# than the one course_lib.homework.checks.lectures takes, with typical wrong answers that must fail.
 CHECKED = re.compile(r'\b(check_number|check_vector)\("(lecture\d\d\.q\d)"')
 
 
@@ -195,8 +195,8 @@ def _curvature_jump_by_hand():
 
 
 def _g2_joints_of_eight_by_continuity_report():
-    from course_lib.continuity import curve_continuity, joint_continuity
-    from course_lib.outlines import glyph_outline
+    from course_lib.constructions.outlines import glyph_outline
+    from course_lib.geometry.continuity import curve_continuity, joint_continuity
 
     g2 = 0
     for contour in glyph_outline("8").contours:  # closed: the closing joint counts too
@@ -210,7 +210,7 @@ def _g2_joints_of_eight_by_continuity_report():
 
 
 def _corners_of_ampersand_by_tangent_angles():
-    from course_lib.outlines import glyph_outline
+    from course_lib.constructions.outlines import glyph_outline
 
     corners = 0
     for contour in glyph_outline("&").contours:  # closed: the closing joint counts too
@@ -285,7 +285,7 @@ def _right(spec):
 
 @pytest.mark.parametrize("qid", sorted(NUMBERS))
 def test_numeric_exercise_accepts_the_right_answer_only(qid):
-    from course_lib.checks.lectures import check_number
+    from course_lib.homework.checks.lectures import check_number
 
     right, wrong = _right(NUMBERS[qid]), NUMBERS[qid][1]
     assert check_number(qid, right).passed
@@ -299,7 +299,7 @@ def test_numeric_exercise_accepts_the_right_answer_only(qid):
 
 @pytest.mark.parametrize("qid", sorted(VECTORS))
 def test_vector_exercise_accepts_the_right_answer_only(qid):
-    from course_lib.checks.lectures import check_vector
+    from course_lib.homework.checks.lectures import check_vector
 
     right, wrong = _right(VECTORS[qid]), VECTORS[qid][1]
     for form in (right, list(right), tuple(right), right.reshape(2, 1)):
@@ -338,7 +338,7 @@ _ANY_ANSWER = st.one_of(
 @settings(max_examples=60, deadline=None)
 @given(st.sampled_from(sorted(VECTORS)), _ANY_ANSWER)
 def test_check_vector_never_raises_and_never_passes_garbage(qid, answer):
-    from course_lib.checks.lectures import check_vector
+    from course_lib.homework.checks.lectures import check_vector
 
     verdict = check_vector(qid, answer)  # must not raise, whatever the answer
     assert isinstance(verdict.message, str) and verdict.message
@@ -353,7 +353,7 @@ def test_check_vector_never_raises_and_never_passes_garbage(qid, answer):
     st.floats(-20, 20, allow_nan=False),
 )
 def test_check_vector_passes_exactly_the_expected_vector(qid, x, y):
-    from course_lib.checks.lectures import check_vector
+    from course_lib.homework.checks.lectures import check_vector
 
     right = _right(VECTORS[qid])
     assert check_vector(qid, [x, y]).passed == bool(np.allclose([x, y], right, rtol=0, atol=1e-8))

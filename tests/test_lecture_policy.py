@@ -268,7 +268,7 @@ def _literal_only(node: ast.AST) -> bool:
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=IDS)
 def test_no_answers_in_the_lecture(path):
-    """Checks compare with a hash or a value computed in course_lib.checks, never a literal."""
+    """Checks compare with a hash or a value computed in course_lib.homework.checks, never a literal."""
     problems = []
     cells = _cells(path)
     for k, c in enumerate(cells):

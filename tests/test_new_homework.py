@@ -47,9 +47,9 @@ from nbclient import NotebookClient
 root, hw = Path.cwd(), sys.argv[1]
 from tools import build_homework as build
 from tools.grading.protocol import LocalStudent, run_question
-import course_lib.checks
+import course_lib.homework.checks
 
-out = {"course_lib": course_lib.checks.__file__, "homeworks": list(course_lib.checks.HOMEWORKS),
+out = {"course_lib": course_lib.homework.checks.__file__, "homeworks": list(course_lib.homework.checks.HOMEWORKS),
        "build_check": build.main(["--check"])}
 (source,) = [s for s in build.sources() if s.stem.startswith(hw + "_")]
 
@@ -97,7 +97,7 @@ POLICY_TESTS = [
 
 
 def _next_homework() -> str:
-    numbers = [int(p.stem[2:]) for p in (ROOT / "course_lib" / "checks").glob("hw[0-9][0-9].py")]
+    numbers = [int(p.stem[2:]) for p in (ROOT / "course_lib" / "homework" / "checks").glob("hw[0-9][0-9].py")]
     return f"hw{max(numbers) + 1:02d}"
 
 
@@ -155,7 +155,7 @@ def test_scaffolder_writes_the_files_and_says_what_to_do(scaffolded):
         and p.suffix in (".py", ".ipynb")
     )  # fmt: skip
     assert new == sorted([
-        f"course_lib/checks/{hw}.py", f"course_lib/checks/_variants_{hw}.py",
+        f"course_lib/homework/checks/{hw}.py",
         f"exercises/{stem}.ipynb", f"solutions/hidden_tests/{hw}.py",
         f"solutions/{stem}.ipynb", f"tools/homework_src/{stem}.py", "driver.py",
     ])  # fmt: skip
@@ -163,12 +163,15 @@ def test_scaffolder_writes_the_files_and_says_what_to_do(scaffolded):
     assert "CONTRIBUTING.md" in made.stdout
     source = (root / "tools" / "homework_src" / f"{stem}.py").read_text(encoding="utf-8")
     assert f'HOMEWORK = "{hw}"' in source and f"# # Homework {int(hw[2:])} — {TITLE}" in source
-    # a variant generator is scaffolded and wired: notebook, check and hidden test read its data
+    # a variant generator is scaffolded beside the checks and wired: notebook, check and hidden
+    # test read its data
+    checks = (root / "course_lib" / "homework" / "checks" / f"{hw}.py").read_text(encoding="utf-8")
+    assert "def generate(rng) -> dict:" in checks
     assert 'VARIANT = ""' in source and "DATA = variants.data(HOMEWORK, VARIANT)" in source
     hidden = (root / "solutions" / "hidden_tests" / f"{hw}.py").read_text(encoding="utf-8")
     assert "VARIANTS = True" in hidden and "def q1(student, data=None):" in hidden
     # nothing was written into this checkout
-    assert not list((ROOT / "course_lib" / "checks").glob(f"{hw}.py"))
+    assert not list((ROOT / "course_lib" / "homework" / "checks").glob(f"{hw}.py"))
     assert not list((ROOT / "tools" / "homework_src").glob(f"{hw}_*.py"))
 
 

@@ -23,8 +23,8 @@ import numpy as np
 import pytest
 from _homework_support import VariantHomework, load
 
-from course_lib import own_work, variants
-from course_lib.checks import HOMEWORKS, check, questions, registry
+from course_lib.homework import own_work, variants
+from course_lib.homework.checks import HOMEWORKS, check, questions, registry
 from tools.grading.protocol import LocalStudent, run_question
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -36,7 +36,7 @@ HIDDEN = {
 
 
 def _outline_of(P0, A, B, P2):
-    from course_lib.outlines import Outline, truetype_contour
+    from course_lib.constructions.outlines import Outline, truetype_contour
 
     pts = np.array([P0, A, B, P2], dtype=float)
     return Outline((truetype_contour(pts, np.array([True, False, False, True])),), "one joint")
@@ -45,31 +45,31 @@ def _outline_of(P0, A, B, P2):
 #: question -> (module, implementation, how a lazy submission turns it into the answer)
 LAZY = {
     "hw01.q2": (
-        "course_lib.reparametrization",
+        "course_lib.geometry.reparametrization",
         "faa_di_bruno",
         lambda impl, q1, q2, f1, f2: impl(np.array([q1, q2]), np.array([f1, f2])),
     ),
     "hw02.q3": (
-        "course_lib.beta_constraints",
+        "course_lib.geometry.beta_constraints",
         "solve_shape_parameters",
         lambda impl, q, r, tol=1e-9: bool(
             impl(np.array([q], float), np.array([r], float)).betas[0] > 0
         ),
     ),
-    "hw03.q2": ("course_lib.knot_splines", "bezier_points_from_g1", lambda impl, d, k: impl(d, k)),
-    "hw03.q7": ("course_lib.knot_splines", "knot_ratio_beta1", lambda impl, t: impl(t)),
+    "hw03.q2": ("course_lib.constructions.knot_splines", "bezier_points_from_g1", lambda impl, d, k: impl(d, k)),
+    "hw03.q7": ("course_lib.constructions.knot_splines", "knot_ratio_beta1", lambda impl, t: impl(t)),
     "hw04.q2": (
-        "course_lib.stitching",
+        "course_lib.constructions.stitching",
         "g2_stitch_points",
         lambda impl, V, b1, b2: impl(V, b1, b2),
     ),
     "hw04.q4": (
-        "course_lib.beta_splines",
+        "course_lib.constructions.beta_splines.quadratic_cubic",
         "quadratic_beta_spline",
         lambda impl, V, b: np.array(impl(V, b).segments),
     ),
     "hw05.q2": (
-        "course_lib.outlines",
+        "course_lib.constructions.outlines.classification",
         "classify_joints",
         lambda impl, P0, A, B, P2: bool(impl(_outline_of(P0, A, B, P2)).kind[1] == "G2"),
     ),
@@ -217,7 +217,7 @@ def test_state_set_before_the_check_does_not_switch_the_guard_off(monkeypatch):
     """A notebook that empties the guard's state or the environment before its check."""
     monkeypatch.setenv(own_work.ENV_VAR, "")
     own_work._ACTIVE.clear()
-    from course_lib.knot_splines import knot_ratio_beta1 as alias
+    from course_lib.constructions.knot_splines import knot_ratio_beta1 as alias
 
     verdict = check("hw03.q7", alias)
     assert "is the exercise of hw03.q7" in verdict.message
@@ -231,7 +231,7 @@ def test_a_child_process_inherits_the_exercise(tmp_path):
 
     code = (
         "import numpy as np\n"
-        "from course_lib.knot_splines import knot_ratio_beta1\n"
+        "from course_lib.constructions.knot_splines import knot_ratio_beta1\n"
         "print(knot_ratio_beta1(np.array([0.0, 1.0, 3.0])))\n"
     )
 
@@ -247,7 +247,7 @@ def test_a_child_process_inherits_the_exercise(tmp_path):
 
 def test_other_questions_and_plain_use_are_not_guarded():
     """Outside an evaluation, and during another question's, the library works as always."""
-    from course_lib.knot_splines import bezier_points_from_g1
+    from course_lib.constructions.knot_splines import bezier_points_from_g1
 
     D = np.array([[0, 0], [1, 2], [2, 3], [4, 3], [5, 1], [6, 0]], dtype=float)
     ref = bezier_points_from_g1(D, [0.0, 1.0, 3.0])
@@ -277,13 +277,13 @@ def test_the_honest_solution_keeps_full_marks(qid, solution_namespaces):
 # ------------------------------------------------------------------ in the sandboxed kernel
 LAZY_CELLS = {
     "knot_ratio_beta1": (
-        "from course_lib.knot_splines import knot_ratio_beta1 as _library_ratio\n"
+        "from course_lib.constructions.knot_splines import knot_ratio_beta1 as _library_ratio\n"
         "knot_ratio_beta1 = _library_ratio  # an alias bound before the check\n"
     ),
     "g1_bezier_control_points": (
         "import importlib\n"
         "def g1_bezier_control_points(d, knots):\n"
-        "    return importlib.import_module('course_lib.knot_splines').bezier_points_from_g1(d, knots)\n"
+        "    return importlib.import_module('course_lib.constructions.knot_splines').bezier_points_from_g1(d, knots)\n"
     ),
 }
 
@@ -303,7 +303,7 @@ def test_a_lazy_notebook_graded_in_the_sandbox(tmp_path):
     assert sum(c.source in LAZY_CELLS.values() for c in nb.cells) == 2
     (q1,) = [c for c in nb.cells if c.cell_type == "code" and c.source.startswith("t0, t1, t2 =")]
     q1.source = (  # a value question's one-liner: the cell raises in the kernel
-        "from course_lib.knot_splines import bezier_points_from_g1\n"
+        "from course_lib.constructions.knot_splines import bezier_points_from_g1\n"
         'answer_q1 = bezier_points_from_g1(D, DATA["q3"]["knots"]["a"])[3]\n'
     )
     subs = tmp_path / "subs"
@@ -361,7 +361,7 @@ def test_the_homework_text_states_the_rule_and_what_each_function_may_use(hw):
 def _notebook_namespace(hw: str) -> dict:
     """The globals of a homework notebook after its Preparations cell."""
     ns: dict = {"__name__": f"{hw}_own_work"}
-    exec(f"from course_lib.checks import check, check_all\nHOMEWORK = {hw!r}\n", ns)
+    exec(f"from course_lib.homework.checks import check, check_all\nHOMEWORK = {hw!r}\n", ns)
     return ns
 
 
@@ -493,7 +493,7 @@ def test_the_tracer_test_can_fail(monkeypatch):
     """Without the refusal the same tracer finds hw01.q7's arc length among the check's locals."""
     import sys
 
-    monkeypatch.setattr("course_lib.checks._core._gettrace", lambda: None)
+    monkeypatch.setattr("course_lib.homework.checks._core._gettrace", lambda: None)
     spy = Spy()
     sys.settrace(spy)
     try:
@@ -521,10 +521,10 @@ def test_a_function_that_leaves_a_tracer_behind_is_refused(qid):
 
 def test_no_check_module_has_a_helper_that_computes_an_answer():
     """The helpers the issue found (and their kind) are gone from the checks modules."""
-    import course_lib.checks.hw01 as h1
-    import course_lib.checks.hw02 as h2
-    import course_lib.checks.hw03 as h3
-    import course_lib.checks.hw05 as h5
+    import course_lib.homework.checks.hw01 as h1
+    import course_lib.homework.checks.hw02 as h2
+    import course_lib.homework.checks.hw03 as h3
+    import course_lib.homework.checks.hw05 as h5
 
     for module, name in [
         (h1, "_parabola_length"),
@@ -551,10 +551,10 @@ def test_no_check_module_has_a_helper_that_computes_an_answer():
 def test_symbolic_digests_are_the_hand_derived_expressions_away_from_rounding(
     qid, text, digest_name
 ):
-    from course_lib import answers
-    from course_lib.checks import values_digest
+    from course_lib.homework import answers
+    from course_lib.homework.checks import values_digest
 
-    module = importlib.import_module(f"course_lib.checks.{qid.split('.')[0]}")
+    module = importlib.import_module(f"course_lib.homework.checks.{qid.split('.')[0]}")
     q = qid.split(".")[1].upper()
     symbols, points = getattr(module, f"_{q}_SYMBOLS"), getattr(module, f"_{q}_POINTS")
     _, values = answers.evaluate(text, symbols, points, "x")
@@ -647,11 +647,11 @@ def test_the_red_team_one_liners_of_hw01_raise_in_hw01():
     ns = _notebook_namespace("hw01")
     ns.update(np=np)
     lines = {
-        "hw01.q1": "from course_lib.differential_geometry import arc_length_derivatives as a\n"
-        "from course_lib.parametrization import ParametricCurve\nimport sympy as sp\n"
+        "hw01.q1": "from course_lib.geometry.differential_geometry import arc_length_derivatives as a\n"
+        "from course_lib.curves.parametrization import ParametricCurve\nimport sympy as sp\n"
         "t = sp.Symbol('t')\n"
         "a(ParametricCurve.from_sympy([t, t**2], t, (-9, 9)), 0.5, 1)",
-        "hw01.q7": "from course_lib._bezier_length import robust_hodograph_length as r\n"
+        "hw01.q7": "from course_lib.geometry.arc_length import robust_hodograph_length as r\n"
         "r(np.diff([[0.0, 0.0], [0.5, 0.0], [1.0, 1.0]], axis=0))",
     }
     for qid, source in lines.items():
@@ -746,7 +746,7 @@ def test_a_friends_notebook_scores_at_most_a_quarter(hw):
 @pytest.mark.parametrize("how", ["require", "module", "code"])
 def test_a_guard_switched_off_by_rebinding_costs_the_question(how, monkeypatch):
     """The obvious ways to switch the guard off before the check, each one assignment."""
-    from course_lib import knot_splines
+    from course_lib.constructions import knot_splines
 
     if how == "require":
         monkeypatch.setattr(own_work, "require", lambda *a: None)
@@ -772,11 +772,11 @@ def test_a_guard_switched_off_by_rebinding_costs_the_question(how, monkeypatch):
 def test_the_exercise_travels_as_a_flag_not_as_a_sentence():
     """The check, the probe and the grader recognise ExerciseError by its type and fields: a
     student's exception that copies the sentence is an exception like any other."""
-    from course_lib import _probe
-    from course_lib.checks._core import AnswerProblem, call_answer
-    from course_lib.knot_splines import knot_ratio_beta1
+    from course_lib.constructions.knot_splines import knot_ratio_beta1
+    from course_lib.homework import protocol as _probe
+    from course_lib.homework.checks._core import AnswerProblem, call_answer
 
-    sentence = own_work.exercise_message("course_lib.knot_splines.knot_ratio_beta1", "hw03.q7")
+    sentence = own_work.exercise_message("course_lib.constructions.knot_splines.knot_ratio_beta1", "hw03.q7")
 
     def mimic(knots):
         raise RuntimeError(sentence)
@@ -785,7 +785,7 @@ def test_the_exercise_travels_as_a_flag_not_as_a_sentence():
     response = _probe.handle({"op": "call", "name": "knot_ratio_beta1", "args": [[0, 1, 3]]},
                              {"knot_ratio_beta1": knot_ratio_beta1})  # fmt: skip
     assert response["error"] == "exercise" and response["question"] == "hw03.q7"
-    assert response["implementation"] == "course_lib.knot_splines.knot_ratio_beta1"
+    assert response["implementation"] == "course_lib.constructions.knot_splines.knot_ratio_beta1"
     response = _probe.handle({"op": "call", "name": "knot_ratio_beta1", "args": [[0, 1, 3]]},
                              {"knot_ratio_beta1": mimic})  # fmt: skip
     assert response["error"] == "raised"
@@ -804,9 +804,9 @@ def test_the_exercise_travels_as_a_flag_not_as_a_sentence():
 
 def test_hw03_q2_passes_the_exercise_on_by_its_flag():
     """hw03.q2's check prefixes a failing case's knots -- but not to the own-work sentence."""
-    from course_lib.knot_splines import bezier_points_from_g1
+    from course_lib.constructions.knot_splines import bezier_points_from_g1
 
-    sentence = own_work.exercise_message("course_lib.knot_splines.bezier_points_from_g1", "hw03.q2")
+    sentence = own_work.exercise_message("course_lib.constructions.knot_splines.bezier_points_from_g1", "hw03.q2")
     assert check("hw03.q2", bezier_points_from_g1).message == sentence + "."
 
     def mimic(d, knots):
@@ -824,16 +824,16 @@ def test_a_forged_exercise_response_gets_no_sentence():
         return json.dumps({"ok": False, "error": "exercise", "message": "anything", **fields})
 
     with pytest.raises(StudentRaised) as info:
-        parse_response(forged(question="hw03.q7", implementation="course_lib.knot_splines.knot_ratio_beta1"))
+        parse_response(forged(question="hw03.q7", implementation="course_lib.constructions.knot_splines.knot_ratio_beta1"))
     assert info.value.exercise and "is the exercise of hw03.q7" in str(info.value)
-    value = "course_lib.knot_splines.bezier_points_from_g1 is the exercise of hw03.q1, hw03.q3"
+    value = "course_lib.constructions.knot_splines.bezier_points_from_g1 is the exercise of hw03.q1, hw03.q3"
     with pytest.raises(StudentRaised) as info:
         parse_response(forged(question="hw03.q1, hw03.q3 and hw03.q5",
-                              implementation="course_lib.knot_splines.bezier_points_from_g1"))
+                              implementation="course_lib.constructions.knot_splines.bezier_points_from_g1"))
     assert value in str(info.value)
-    for fields in ({"question": "hw03.q7", "implementation": "course_lib.bezier.anything"},
+    for fields in ({"question": "hw03.q7", "implementation": "course_lib.curves.bezier.anything"},
                    {"question": "hw03.q1 and hw01.q1",
-                    "implementation": "course_lib.knot_splines.bezier_points_from_g1"},
+                    "implementation": "course_lib.constructions.knot_splines.bezier_points_from_g1"},
                    {"question": "hw99.q1", "implementation": "x"}, {}):  # fmt: skip
         with pytest.raises(StudentRaised) as info:
             parse_response(forged(**fields))
@@ -843,7 +843,7 @@ def test_a_forged_exercise_response_gets_no_sentence():
 def test_an_exercise_error_crosses_processes_with_its_fields():
     import pickle
 
-    err = own_work.ExerciseError("course_lib.knot_splines.knot_ratio_beta1", "hw03.q7", True)
+    err = own_work.ExerciseError("course_lib.constructions.knot_splines.knot_ratio_beta1", "hw03.q7", True)
     back = pickle.loads(pickle.dumps(err))
     assert (back.implementation, back.question, back.switched_off) == (
         err.implementation, err.question, True)  # fmt: skip
@@ -867,7 +867,7 @@ def graded_state(tmp_path, monkeypatch):
 
 def test_the_grader_s_state_guards_whatever_the_kernel_cleared(graded_state):
     """No frame of the probe, no list, no environment, no HOMEWORK: the file decides."""
-    from course_lib.knot_splines import bezier_points_from_g1, knot_ratio_beta1
+    from course_lib.constructions.knot_splines import bezier_points_from_g1, knot_ratio_beta1
 
     D = np.array([[0, 0], [1, 2], [2, 3], [4, 3], [5, 1], [6, 0]], dtype=float)
     assert knot_ratio_beta1(np.array([0.0, 1.0, 3.0])) is not None  # between requests: free
@@ -879,7 +879,7 @@ def test_the_grader_s_state_guards_whatever_the_kernel_cleared(graded_state):
     with pytest.raises(own_work.ExerciseError) as info:
         knot_ratio_beta1(np.array([0.0, 1.0, 3.0]))
     assert (info.value.question, info.value.implementation) == (
-        "hw03.q7", "course_lib.knot_splines.knot_ratio_beta1")  # fmt: skip
+        "hw03.q7", "course_lib.constructions.knot_splines.knot_ratio_beta1")  # fmt: skip
     graded_state.write_text(own_work.grader_state_text("hw04"))  # another homework: free
     assert bezier_points_from_g1(D, [0.0, 1.0, 3.0]) is not None
     graded_state.unlink()  # unreadable: every guarded implementation refuses
@@ -888,7 +888,7 @@ def test_the_grader_s_state_guards_whatever_the_kernel_cleared(graded_state):
 
 
 def test_switching_the_state_file_off_in_the_kernel_costs_the_question(graded_state, monkeypatch):
-    from course_lib.knot_splines import knot_ratio_beta1
+    from course_lib.constructions.knot_splines import knot_ratio_beta1
 
     monkeypatch.setattr(own_work, "_GRADED", False)
     fraction, note = _grade("hw03.q7", {"knot_ratio_beta1": knot_ratio_beta1})

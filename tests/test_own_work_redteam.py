@@ -59,7 +59,7 @@ _ROOT = os.path.dirname(os.path.dirname(course_lib.__file__))
 def knot_ratio_beta1(knots):
     code = (
         "import json, sys; sys.path[:0] = [%r]; "
-        "from course_lib.knot_splines import knot_ratio_beta1; "
+        "from course_lib.constructions.knot_splines import knot_ratio_beta1; "
         "print(json.dumps([float(x) for x in knot_ratio_beta1(json.loads(sys.argv[1]))]))"
     ) % _ROOT
     done = subprocess.run(
@@ -71,7 +71,7 @@ def knot_ratio_beta1(knots):
 
 SPAWN = """
 import multiprocessing
-from course_lib import knot_splines
+from course_lib.constructions import knot_splines
 
 
 def knot_ratio_beta1(knots):
@@ -81,7 +81,7 @@ def knot_ratio_beta1(knots):
 
 FRAMES = """
 import sys
-from course_lib import knot_splines
+from course_lib.constructions import knot_splines
 
 
 def knot_ratio_beta1(knots):
@@ -95,7 +95,7 @@ def knot_ratio_beta1(knots):
 """
 
 HIDDEN = """
-from course_lib.knot_splines import bezier_points_from_g1
+from course_lib.constructions.knot_splines import bezier_points_from_g1
 
 _kept = HOMEWORK
 del HOMEWORK

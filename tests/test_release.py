@@ -87,7 +87,7 @@ def _secret_runs(path: Path) -> set[tuple[float, ...]]:
 def test_edition_holds_what_a_student_needs(edition):
     names = {p.relative_to(edition).as_posix() for p in edition.rglob("*") if p.is_file()}
     assert {"README.md", "Makefile", "pyproject.toml", "environment.yml", "constraints.txt",
-            "course_lib/__init__.py", "course_lib/submit.py", "notebooks/00_welcome.ipynb"} <= names
+            "course_lib/__init__.py", "course_lib/homework/submit.py", "notebooks/00_welcome.ipynb"} <= names
     # make lab's JupyterLab set-up (no news popup, table of contents open, no dead widgets)
     assert {".jupyter-course/jupyter_server_config.py",
             ".jupyter-course/lab/workspaces-defaults/default-37a8.jupyterlab-workspace",

@@ -30,7 +30,7 @@ from pathlib import Path
 import nbformat
 import pytest
 
-from course_lib.submit import manifest_of, submit
+from course_lib.homework.submit import manifest_of, submit
 
 ROOT = Path(__file__).resolve().parents[1]
 HW, NAME, FULL = "hw01", "hw01_reparametrization.ipynb", 11
@@ -84,7 +84,7 @@ def hand_in_from_the_notebook(path: Path, student: str) -> Path:
 
     nb = nbformat.read(path, as_version=4)
     nb.cells.append(nbformat.v4.new_code_cell(
-        f'from course_lib.submit import submit\nsubmit("{NAME}", student="{student}")'))  # fmt: skip
+        f'from course_lib.homework.submit import submit\nsubmit("{NAME}", student="{student}")'))  # fmt: skip
     nbformat.write(nb, path)
     NotebookClient(nb, timeout=120, kernel_name="python3",
                    resources={"metadata": {"path": str(path.parent)}}).execute()  # fmt: skip

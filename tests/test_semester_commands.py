@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from course_lib.submit import find_homework
+from course_lib.homework.submit import find_homework
 from tools import release
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -42,7 +42,7 @@ def test_make_grade_passes_every_option_through():
 def test_make_submit_takes_hw3_and_install_says_what_it_does():
     # -W pyproject.toml: as on a fresh checkout, where the install step has not run yet
     text = _make_n("-W", "pyproject.toml", "submit", "HW=hw3", "STUDENT=s1")
-    assert 'course_lib.submit "hw3" --student "s1"' in text
+    assert 'course_lib.homework.submit "hw3" --student "s1"' in text
     assert "--quiet" not in text and "installing the course" in text
 
 
@@ -73,7 +73,7 @@ def test_the_student_edition_is_a_students_and_explains_the_variant_code(tmp_pat
     for dev in ("pytest", "playwright", "voila", "sphinx", "distributed", "bezier", "tests/"):
         assert dev not in env, dev
     assert "numpy=" in env and "-e ." in env
-    assert 'course_lib.submit "$(HW)"' in (out / "Makefile").read_text(encoding="utf-8")
+    assert 'course_lib.homework.submit "$(HW)"' in (out / "Makefile").read_text(encoding="utf-8")
 
 
 def test_release_refuses_an_edition_with_a_todo_left(tmp_path, monkeypatch):

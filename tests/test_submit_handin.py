@@ -8,7 +8,7 @@ from pathlib import Path
 import nbformat
 import pytest
 
-from course_lib.submit import SUBMIT_CELL_NOTE, SUBMITTING_ENV, manifest_of, submit
+from course_lib.homework.submit import SUBMIT_CELL_NOTE, SUBMITTING_ENV, manifest_of, submit
 
 ROOT = Path(__file__).resolve().parents[1]
 NAME = "hw01_reparametrization.ipynb"
@@ -20,7 +20,7 @@ def test_a_submit_cell_in_the_notebook_is_not_run_again(tmp_path):
     work = tmp_path / "exercises"
     work.mkdir()
     nb = nbformat.read(ROOT / "exercises" / NAME, as_version=4)
-    hand_in = f'from course_lib.submit import submit\nsubmit("{NAME}", student="s1")'
+    hand_in = f'from course_lib.homework.submit import submit\nsubmit("{NAME}", student="s1")'
     nb.cells.append(nbformat.v4.new_code_cell(hand_in))
     nbformat.write(nb, work / NAME)
     sub = submit(work / NAME, student="s1", timeout=60)

@@ -36,11 +36,11 @@ PREP = 'HOMEWORK = "hw03"\nVARIANT = ""'
 HOSTILE = {
     "active cleared": ("from course_lib import own_work\nown_work._ACTIVE.clear()", True),
     "active through an alias": (
-        "import course_lib.knot_splines as ks\now = ks.own_work\na = ow._ACTIVE\na.clear()",
+        "import course_lib.constructions.knot_splines as ks\now = ks.own_work\na = ow._ACTIVE\na.clear()",
         True,
     ),
-    "require replaced": ("import course_lib.own_work as o\no.require = lambda *a: None", True),
-    "sys.modules": ('import sys\nsys.modules["course_lib.own_work"]._ACTIVE.clear()', True),
+    "require replaced": ("import course_lib.homework.own_work as o\no.require = lambda *a: None", True),
+    "sys.modules": ('import sys\nsys.modules["course_lib.homework.own_work"]._ACTIVE.clear()', True),
     "frame's guarded": (
         "import sys\ndef f():\n    fr = sys._getframe(1)\n    while fr:\n"
         '        fr.f_locals["guarded"] = {}\n        fr = fr.f_back',
@@ -53,8 +53,8 @@ HOSTILE = {
     "__code__": ("def f(): pass\nf.__code__ = (lambda: 1).__code__", True),
     "__import__": ("import builtins\nbuiltins.__import__ = None", True),
     "gettrace": ("import sys\nsys.gettrace = lambda: None", True),
-    "probe replaced": ("import course_lib._probe as p\np.handle = None", True),
-    "hidden in exec": ('exec("import course_lib.own_work as o; o._ACTIVE.clear()")', True),
+    "probe replaced": ("import course_lib.homework.protocol as p\np.handle = None", True),
+    "hidden in exec": ('exec("import course_lib.homework.own_work as o; o._ACTIVE.clear()")', True),
     "subprocess, empty env": (
         "import subprocess, sys\ndef knot_ratio_beta1(t):\n"
         '    return subprocess.run([sys.executable, "-c", "1"], env={})',

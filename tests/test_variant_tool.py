@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from course_lib import variants
+from course_lib.homework import variants
 from tools import variant as tool
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -130,3 +130,21 @@ def test_show_works_for_hw05_too(secret, capsys):
     a = 2 * (P0 - 2 * A + M)
     got = ast.literal_eval(worked["answer_q3"])
     assert got[0] == pytest.approx((v[0] * a[1] - v[1] * a[0]) / np.linalg.norm(v) ** 3)
+
+
+def test_variants_find_each_generator_in_its_checks_module_by_name():
+    """No registration by import: ``generate`` lives beside the checks of its homework and
+    ``variants`` looks it up there by the homework's name."""
+    import subprocess
+    import sys
+
+    code = (
+        "import sys\n"
+        "from course_lib.homework import variants\n"
+        "before = 'course_lib.homework.checks.hw01' in sys.modules\n"
+        "from course_lib.homework.checks import hw01\n"
+        "print(before, variants.generator('hw01') is hw01.generate, variants.generator('hw99'),"
+        " variants.generator('lectures'), sorted(variants.generators())[:2])\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.split() == ["False", "True", "None", "None", "['hw01',", "'hw02']"]

@@ -25,9 +25,9 @@ matplotlib.use("Agg")
 
 from _homework_support import VariantHomework, default_data_afterwards, far
 
-from course_lib import variants
-from course_lib.checks import check, questions, registry
-from course_lib.checks._variants_hw02 import Q6_OPTIONS, Q7_SEGMENTS
+from course_lib.homework import variants
+from course_lib.homework.checks import check, questions, registry
+from course_lib.homework.checks.hw02 import Q6_OPTIONS, Q7_SEGMENTS
 
 C2 = "the two parametrizations meet with C² continuity there"
 

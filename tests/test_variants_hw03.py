@@ -22,9 +22,9 @@ matplotlib.use("Agg")
 
 from _homework_support import VariantHomework, default_data_afterwards, differ, far
 
-from course_lib import variants
-from course_lib.checks import check
-from course_lib.checks._variants_hw03 import D_DEFAULT
+from course_lib.homework import variants
+from course_lib.homework.checks import check
+from course_lib.homework.checks.hw03 import D_DEFAULT
 
 HOME = VariantHomework("hw03")
 HIDDEN = HOME.hidden

@@ -26,8 +26,8 @@ matplotlib.use("Agg")
 
 from _homework_support import VariantHomework, default_data_afterwards, differ, far
 
-from course_lib import variants
-from course_lib.checks import check
+from course_lib.homework import variants
+from course_lib.homework.checks import check
 
 HOME = VariantHomework("hw04")
 HIDDEN = HOME.hidden
@@ -224,7 +224,7 @@ def test_the_old_answers_are_wrong_on_most_variants():
 
 def test_gamma_of_the_generator_is_exact():
     """The generator's exact γ agrees with eq. (12.1) in floating point (halves and quarters)."""
-    from course_lib.checks import _variants_hw04 as gen
+    from course_lib.homework.checks import hw04 as gen
 
     for code in CODES[:100]:
         q = variants.data("hw04", code)["q3"]
@@ -240,7 +240,7 @@ from hypothesis import strategies as st  # noqa: E402
 @settings(max_examples=200, deadline=None)
 @given(st.integers(0, 2**63 - 1))
 def test_every_seed_gives_well_posed_data(seed):
-    from course_lib.checks import _variants_hw04 as gen
+    from course_lib.homework.checks import hw04 as gen
 
     d = gen.generate(np.random.default_rng(seed))
     assert d["q1"]["V_dm1"] != d["q1"]["V_d"] and d["q5"]["W_left"] != d["q5"]["W_right"]

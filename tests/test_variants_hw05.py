@@ -34,11 +34,12 @@ matplotlib.use("Agg")
 
 from _homework_support import VariantHomework, default_data_afterwards, far
 
-from course_lib import PiecewiseBezier, variants
-from course_lib.beta_splines import cubic_beta_spline
-from course_lib.checks import _variants_hw05 as gen
-from course_lib.checks import check
-from course_lib.outlines import Contour, Outline, classify_joints, glyph_outline
+from course_lib import PiecewiseBezier
+from course_lib.constructions.beta_splines import cubic_beta_spline
+from course_lib.constructions.outlines import Contour, Outline, classify_joints, glyph_outline
+from course_lib.homework import variants
+from course_lib.homework.checks import check
+from course_lib.homework.checks import hw05 as gen
 
 HOME = VariantHomework("hw05")
 HIDDEN = HOME.hidden

@@ -16,7 +16,7 @@ matplotlib.use("Agg")
 
 from _homework_support import VariantHomework, differ
 
-from course_lib import variants
+from course_lib.homework import variants
 
 # homework -> (questions whose data differ per student, answers that must differ per pair)
 HOMEWORKS = {

@@ -37,7 +37,7 @@ The trust boundary
 Student code is hostile input.  It runs only in a sandboxed kernel (``tools/grading/sandbox.py``:
 bubblewrap, no network, no view of the course checkout beyond ``course_lib``, resource limits,
 nothing survives it).  Hidden tests and expected values never enter that kernel: they run here,
-in the grader, and ask the kernel for *data* through ``course_lib._probe`` -- a name's value,
+in the grader, and ask the kernel for *data* through ``course_lib.homework.protocol`` -- a name's value,
 the result of the student's function on inputs chosen here, a symbolic answer evaluated at
 points chosen here -- which arrives as size-limited JSON and is validated here
 (``tools/grading/protocol.py``).  Comparisons, fractions and notes are computed here, clamped to
@@ -58,7 +58,7 @@ Hidden tests
 A hidden test file is plain Python (not collected by pytest: do not name it ``test_*.py``) with
 ``HOMEWORK``, ``POINTS`` (questions in report order, with their points) and one function
 ``qN(student)`` per question; ``student`` gives plain data only (``tools/grading/protocol.py``).
-The format, the answer readers of ``course_lib.answers`` and the rules are in
+The format, the answer readers of ``course_lib.homework.answers`` and the rules are in
 ``solutions/hidden_tests/README.md``.  Expected values come from first principles, never from
 the code the solution notebook calls.
 
@@ -94,7 +94,7 @@ from concurrent.futures import ThreadPoolExecutor, as_completed
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
-from course_lib import variants
+from course_lib.homework import variants
 from tools.grading import identity, intake, jobroot, reports, safe_names, sandbox
 from tools.grading.runner import (
     DEFAULT_CELL_TIMEOUT,

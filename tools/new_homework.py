@@ -10,9 +10,9 @@ writes
   ``tools/build_homework.py``): title, how to work, Preparations with ``HOMEWORK = "hw05"``, one
   value question and one function question as examples, their check cells, "Check everything"
   and "Hand in";
-* ``course_lib/checks/hw05.py`` -- the feedback checks of the two example questions;
-* ``course_lib/checks/_variants_hw05.py`` -- the generator of every student's own data
-  (per-student variants, ``course_lib/variants.py``): the value question reads its data from
+* ``course_lib/homework/checks/hw05.py`` -- the feedback checks of the two example questions
+  and the generator of every student's own data, ``generate(rng)`` (per-student variants,
+  ``course_lib/homework/variants.py`` finds it there by name): the value question reads its data from
   ``DATA = variants.data(HOMEWORK, VARIANT)``, the check from ``variants.current``, the hidden
   test from its ``data`` argument;
 * ``solutions/hidden_tests/hw05.py`` -- the hidden tests of the two example questions (form:
@@ -20,7 +20,7 @@ writes
 * ``exercises/hw05_are_letters_smooth.ipynb`` and ``solutions/...`` -- by running
   ``tools/build_homework.py``.
 
-Nothing is registered by hand: the list of homework (``course_lib.checks.HOMEWORKS``) and the
+Nothing is registered by hand: the list of homework (``course_lib.homework.checks.HOMEWORKS``) and the
 test suite's lists are derived from these files.  It never overwrites a file: if anything of
 ``hwNN`` exists already it stops and changes nothing.  What to do next is printed at the end and
 written in CONTRIBUTING.md ("Homework: the rules the tests enforce").
@@ -87,8 +87,7 @@ def planned_files(homework: str, title: str, root: Path = ROOT) -> dict[str, Pat
     stem = f"{homework}_{slug(title)}"
     return {
         "source": root / "tools" / "homework_src" / f"{stem}.py",
-        "checks": root / "course_lib" / "checks" / f"{homework}.py",
-        "generator": root / "course_lib" / "checks" / f"_variants_{homework}.py",
+        "checks": root / "course_lib" / "homework" / "checks" / f"{homework}.py",
         "hidden": root / "solutions" / "hidden_tests" / f"{homework}.py",
         "exercise": root / "exercises" / f"{stem}.ipynb",
         "solution": root / "solutions" / f"{stem}.ipynb",
@@ -102,8 +101,7 @@ def existing_files(homework: str, root: Path = ROOT) -> list[Path]:
         *(root / "exercises").glob(f"{homework}_*.ipynb"),
         *(root / "solutions").glob(f"{homework}_*.ipynb"),
     ]
-    found += [p for p in (root / "course_lib" / "checks" / f"{homework}.py",
-                          root / "course_lib" / "checks" / f"_variants_{homework}.py",
+    found += [p for p in (root / "course_lib" / "homework" / "checks" / f"{homework}.py",
                           root / "solutions" / "hidden_tests" / f"{homework}.py") if p.exists()]  # fmt: skip
     return sorted(found)
 
@@ -148,8 +146,8 @@ SOURCE = r'''# Source of exercises/@STEM@.ipynb and solutions/@STEM@.ipynb.
 # %%
 import numpy as np
 
-from course_lib import variants
-from course_lib.checks import check, check_all
+from course_lib.homework import variants
+from course_lib.homework.checks import check, check_all
 
 HOMEWORK = "@HW@"
 VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "KQW7MZP3XS"
@@ -218,7 +216,7 @@ report
 # gave you with your variant code (your id on the course roster, e.g. your student number / SIS id):
 #
 # * in a terminal, from the course folder: `make submit HW=@HW@ STUDENT=your-id`
-# * in a new cell here: `from course_lib.submit import submit; submit("@STEM@.ipynb", student="your-id")`
+# * in a new cell here: `from course_lib.homework.submit import submit; submit("@STEM@.ipynb", student="your-id")`
 #
 # Either runs the notebook top to bottom in a fresh kernel, as the grader will, lists the cells that
 # fail, and writes `submissions/@HW@-your-id.ipynb`. Upload that file. The checks above are feedback;
@@ -233,16 +231,31 @@ the notebook (``exercises/@STEM@.ipynb``).  The question data is stated in the n
 repeated here; the solution notebook, executed by the test suite, passes every check, which keeps
 the two in step.  A check tests properties of the answer or compares it with a value computed here
 at check time, reads the answer with the readers of ``_core`` (the grader's
-:mod:`course_lib.answers`) and never prints an expected value.
+:mod:`course_lib.homework.answers`) and never prints an expected value.
+
+Question data
+-------------
+``generate(None)`` is the default data (the notebook's ``VARIANT = ""``); ``generate(rng)`` a
+student's own variant (:mod:`course_lib.homework.variants` finds ``generate`` here by the
+homework's name; the code the instructor hands out seeds ``rng``).  Emit only well-posed data: a
+test over many codes should prove it (``tests/test_variants_hw01.py`` is the model).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from .. import variants
-from . import _variants_@HW@  # noqa: F401  (registers the generator of @HW@'s data)
-from ._core import as_vector, call_answer, close, fail, ok, register
+from course_lib.homework import variants
+from course_lib.homework.checks._core import as_vector, call_answer, close, fail, ok, register
+
+
+# ============================================================ the question data: every student's variant
+def generate(rng) -> dict:
+    t = 2.0 if rng is None else float(rng.integers(2, 6))  # q1: t0 in 2..5, never 0
+    return {"q1": {"t": t, "text": f"c(t) = (t², t³), t0 = {t:g}"}}
+
+
+# ============================================================ the checks
 
 
 @register("@HW@.q1", "answer_q1", "the velocity of c(t) = (t², t³) at your t0")
@@ -275,7 +288,7 @@ def _q2(func):
 HIDDEN = r'''"""Hidden tests of homework @N@: @TITLE@ (run by tools/grade.py in the grader; never shipped).
 
 Scaffolded by ``tools/new_homework.py``: replace the two example tests by one ``qN(student)`` per
-question of ``course_lib/checks/@HW@.py``, in the same order in ``POINTS``.  Form and rules:
+question of ``course_lib/homework/checks/@HW@.py``, in the same order in ``POINTS``.  Form and rules:
 ``solutions/hidden_tests/README.md``.  Expected values are computed here from ``DATA`` with
 closed forms derived by hand (derivations next to them), never with course_lib's mathematics or
 the solution notebook's code.
@@ -287,12 +300,12 @@ import math
 
 import numpy as np
 
-from course_lib import answers
+from course_lib.homework import answers
 
 HOMEWORK = "@HW@"
 POINTS = {"q1": 1, "q2": 2}
 #: per-student variants: the grader calls qN(student, data) with the student's own data
-#: (``course_lib/checks/_variants_@HW@.py``); without data, the default data below
+#: (``generate`` in ``course_lib/homework/checks/@HW@.py``); without data, the default data below
 VARIANTS = True
 
 #: The default data (what ``variants.data("@HW@", "")`` gives).
@@ -338,28 +351,6 @@ def answers_for(data):
     return {"answer_q1": [2 * t, 3 * t * t], "unit_tangent": "v / ‖v‖ (any data)"}
 '''
 
-GENERATOR = r'''"""The question data of homework @N@ as a function of a random generator (per-student variants).
-
-``generate(None)`` is the default data (the notebook's ``VARIANT = ""``); ``generate(rng)`` a
-student's own variant (:mod:`course_lib.variants`: the code the instructor hands out seeds
-``rng``).  Emit only well-posed data: a test over many codes should prove it
-(``tests/test_variants_hw01.py`` is the model).
-"""
-
-from __future__ import annotations
-
-from .. import variants
-
-__all__ = ["generate"]
-
-
-@variants.register("@HW@")
-def generate(rng) -> dict:
-    t = 2.0 if rng is None else float(rng.integers(2, 6))  # q1: t0 in 2..5, never 0
-    return {"q1": {"t": t, "text": f"c(t) = (t², t³), t0 = {t:g}"}}
-'''
-
-
 def _fill(template: str, homework: str, number: int, title: str, stem: str) -> str:
     for key, value in (
         ("@HW@", homework),
@@ -383,7 +374,7 @@ Next:
      replace the two examples and every TODO; then  python tools/build_homework.py
   2. One check per question in {checks} and one qN(student, data) per question in
      {hidden} (POINTS in the same order, >= 5 specific assert/comment/return lines);
-     each student's data comes from {generator} (per-student variants):
+     each student's data comes from generate() in {checks} (per-student variants):
      add a tests/test_variants_hwNN.py like tests/test_variants_hw01.py.
   3. One row per question in TABLE of tests/test_answer_equivalence.py (>= 2 accepted forms,
      >= 3 typical wrong answers) and a right answer in RIGHT of tests/unit/test_checks.py, then run
@@ -410,8 +401,7 @@ def main(argv: list[str] | None = None) -> int:
         return 1
     files = planned_files(homework, title)
     stem = files["source"].stem
-    for key, template in (("source", SOURCE), ("generator", GENERATOR), ("checks", CHECKS),
-                          ("hidden", HIDDEN)):  # fmt: skip
+    for key, template in (("source", SOURCE), ("checks", CHECKS), ("hidden", HIDDEN)):
         path = files[key]
         path.parent.mkdir(parents=True, exist_ok=True)
         with open(path, "x", encoding="utf-8") as fh:  # "x": never overwrite

@@ -77,7 +77,7 @@ made from it, and the grader finds you (and your data) by it.
 
 Save the notebook, then `make submit HW=hw01 STUDENT=your-id` (`HW=hw1` or `HW=1` work too; or,
 in a new cell at the end of the notebook,
-`from course_lib.submit import submit; submit("hw01_reparametrization.ipynb", student="your-id")`).
+`from course_lib.homework.submit import submit; submit("hw01_reparametrization.ipynb", student="your-id")`).
 It runs your notebook top to bottom in a fresh kernel — exactly what the grader does; the cell
 that calls `submit` is not run again — lists the cells that raise an error, says how many checks
 pass (and if `VARIANT` is still empty), and writes `submissions/hw01-your-id.ipynb` with a small
@@ -110,7 +110,7 @@ lab: install
 
 submit: install
 \t@test -n "$(STUDENT)" || (echo "usage: make submit HW=hw01 STUDENT=your-id"; exit 2)
-\t$(BIN)/python -m course_lib.submit "$(HW)" --student "$(STUDENT)"
+\t$(BIN)/python -m course_lib.homework.submit "$(HW)" --student "$(STUDENT)"
 """
 
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Per-student homework variants, the instructor's side (issue 19; ``course_lib.variants``).
+"""Per-student homework variants, the instructor's side (issue 19; ``course_lib.homework.variants``).
 
 Usage::
 
@@ -19,7 +19,7 @@ Usage::
 The roster is the course's CSV (``id`` column) or an LMS export as downloaded (Canvas's
 gradebook export: the SIS User ID; Moodle's grading worksheet or grades export: the ID number,
 else the e-mail) -- give ``codes`` and ``tools/grade.py`` the same file.  A code is 10
-characters without look-alikes, the last a check character (``course_lib.variants``).
+characters without look-alikes, the last a check character (``course_lib.homework.variants``).
 """
 
 from __future__ import annotations
@@ -42,7 +42,7 @@ import secrets
 import sys
 from pathlib import Path
 
-from course_lib import variants
+from course_lib.homework import variants
 from tools.grading import reports
 from tools.grading.safe_names import safe_csv_writer
 

@@ -7,10 +7,17 @@ defined and documented in the module it is imported from.
 
 from __future__ import annotations
 
-from .. import PiecewiseBezier
-from ..checks.lectures import check_number, check_vector, quiz
-from ..differential_geometry import speed, unit_tangent
-from ..plotting.lecture_figures import deformation_figure, example1_figure, joint_figure
+from course_lib import PiecewiseBezier
+from course_lib.geometry.differential_geometry import (
+    speed,
+    unit_tangent,
+)
+from course_lib.homework.checks.lectures import check_number, check_vector, quiz
+from course_lib.plotting.lecture_figures import (
+    deformation_figure,
+    example1_figure,
+    joint_figure,
+)
 
 __all__ = [
     "PiecewiseBezier",

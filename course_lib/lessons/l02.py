@@ -7,18 +7,32 @@ defined and documented in the module it is imported from.
 
 from __future__ import annotations
 
-from .. import PiecewiseBezier
-from ..checks.lectures import check_number, check_vector, quiz
-from ..continuity import joint_continuity
-from ..differential_geometry import curvature, signed_curvature, speed, unit_tangent
-from ..joint_reparametrization import onto_change_of_variables
-from ..parametrization import ParametricCurve
-from ..plotting import new_figure, plot_curve, plot_frame, plot_vectors, plot_velocity
-from ..plotting.lecture_figures import models_figure, reparametrization_figure
-from ..plotting.reparametrization_figure import plot_reparametrization
-from ..plotting.style import ROLE_COLORS
-from ..reparametrization import ChangeOfVariables, Reparametrized, are_equivalent
-from ..widgets import reparametrization_demo
+from course_lib import PiecewiseBezier
+from course_lib.curves.parametrization import ParametricCurve
+from course_lib.geometry.continuity import joint_continuity
+from course_lib.geometry.differential_geometry import (
+    curvature,
+    signed_curvature,
+    speed,
+    unit_tangent,
+)
+from course_lib.geometry.joint_reparametrization import onto_change_of_variables
+from course_lib.geometry.reparametrization import ChangeOfVariables, Reparametrized, are_equivalent
+from course_lib.homework.checks.lectures import check_number, check_vector, quiz
+from course_lib.plotting import (
+    new_figure,
+    plot_curve,
+    plot_frame,
+    plot_vectors,
+    plot_velocity,
+)
+from course_lib.plotting.lecture_figures import (
+    models_figure,
+    reparametrization_figure,
+)
+from course_lib.plotting.reparametrization_figure import plot_reparametrization
+from course_lib.plotting.style import ROLE_COLORS
+from course_lib.widgets import reparametrization_demo
 
 __all__ = [
     "ROLE_COLORS",

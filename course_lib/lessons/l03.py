@@ -6,14 +6,16 @@ defined and documented in the module it is imported from.
 
 from __future__ import annotations
 
-from .. import PiecewiseBezier
-from ..beta_constraints import beta_constraints, solve_shape_parameters
-from ..checks.lectures import check_number, check_vector, quiz
-from ..joint_reparametrization import onto_change_of_variables
-from ..plotting import new_figure, plot_curve
-from ..plotting.lecture_figures import names_figure
-from ..reparametrization import ChangeOfVariables
-from ..seed_formulas import inverse_betas
+from course_lib import PiecewiseBezier
+from course_lib.geometry.beta_constraints import beta_constraints, solve_shape_parameters
+from course_lib.geometry.joint_reparametrization import onto_change_of_variables
+from course_lib.geometry.reparametrization import ChangeOfVariables
+from course_lib.homework.checks.lectures import check_number, check_vector, quiz
+from course_lib.plotting import new_figure, plot_curve
+from course_lib.plotting.lecture_figures import (
+    names_figure,
+)
+from course_lib.sources.seed_formulas import inverse_betas
 
 __all__ = [
     "ChangeOfVariables",

@@ -7,14 +7,21 @@ defined and documented in the module it is imported from.
 
 from __future__ import annotations
 
-from .. import PiecewiseBezier
-from ..checks.lectures import check_number, check_vector, quiz
-from ..continuity import curve_continuity
-from ..differential_geometry import arc_length_derivatives
-from ..plotting import new_figure, plot_curvature_comb, plot_curvature_profile, plot_curve
-from ..plotting.lecture_figures import combs_figure
-from ..stitching import g2_stitch
-from ..widgets import g2_stitch_demo
+from course_lib import PiecewiseBezier
+from course_lib.constructions.stitching import g2_stitch
+from course_lib.geometry.continuity import curve_continuity
+from course_lib.geometry.differential_geometry import arc_length_derivatives
+from course_lib.homework.checks.lectures import check_number, check_vector, quiz
+from course_lib.plotting import (
+    new_figure,
+    plot_curvature_comb,
+    plot_curvature_profile,
+    plot_curve,
+)
+from course_lib.plotting.lecture_figures import (
+    combs_figure,
+)
+from course_lib.widgets import g2_stitch_demo
 
 __all__ = [
     "PiecewiseBezier",

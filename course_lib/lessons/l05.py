@@ -8,16 +8,25 @@ from __future__ import annotations
 
 from scipy.spatial.distance import pdist
 
-from .. import PiecewiseBezier
-from .. import differential_geometry as dg
-from ..checks.lectures import check_number, quiz
-from ..closeness import closeness, rippled_circle
-from ..parametrization import ParametricCurve
-from ..plotting import new_figure, plot_curve, plot_frame, plot_osculating_circle
-from ..plotting.closeness_figure import plot_closeness
-from ..plotting.lecture_figures import closeness_figure, frame_figure, rebuilt_figure
-from ..reparametrization import ChangeOfVariables, Reparametrized
-from ..widgets import curvature_comb_demo
+from course_lib import PiecewiseBezier
+from course_lib.curves.parametrization import ParametricCurve
+from course_lib.geometry import differential_geometry as dg
+from course_lib.geometry.closeness import closeness, rippled_circle
+from course_lib.geometry.reparametrization import ChangeOfVariables, Reparametrized
+from course_lib.homework.checks.lectures import check_number, quiz
+from course_lib.plotting import (
+    new_figure,
+    plot_curve,
+    plot_frame,
+    plot_osculating_circle,
+)
+from course_lib.plotting.closeness_figure import plot_closeness
+from course_lib.plotting.lecture_figures import (
+    closeness_figure,
+    frame_figure,
+    rebuilt_figure,
+)
+from course_lib.widgets import curvature_comb_demo
 
 __all__ = [
     "ChangeOfVariables",

@@ -6,15 +6,23 @@ defined and documented in the module it is imported from.
 
 from __future__ import annotations
 
-from .. import PiecewiseBezier
-from ..checks.lectures import check_number, quiz
-from ..continuity import curve_continuity
-from ..knot_splines import g1_knot_spline
-from ..plotting import new_figure, plot_control_polygon, plot_curve
-from ..plotting.constructions import plot_knot_joint_construction
-from ..plotting.lecture_figures import g1_joint_figure, knot_joint_figure, splines_figure
-from ..seed_formulas import barycentric_weights
-from ..widgets import knot_spline_demo
+from course_lib import PiecewiseBezier
+from course_lib.constructions.knot_splines import g1_knot_spline
+from course_lib.geometry.continuity import curve_continuity
+from course_lib.homework.checks.lectures import check_number, quiz
+from course_lib.plotting import new_figure, plot_control_polygon, plot_curve
+from course_lib.plotting.constructions import (
+    plot_knot_joint_construction,
+)
+from course_lib.plotting.lecture_figures import (
+    g1_joint_figure,
+    knot_joint_figure,
+    splines_figure,
+)
+from course_lib.sources.seed_formulas import (
+    barycentric_weights,
+)
+from course_lib.widgets import knot_spline_demo
 
 __all__ = [
     "PiecewiseBezier",

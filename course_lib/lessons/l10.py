@@ -6,15 +6,19 @@ defined and documented in the module it is imported from.
 
 from __future__ import annotations
 
-from ..checks.lectures import check_number
-from ..plotting.lecture_figures import (
+from course_lib.constructions.surfaces import (
+    BezierPatch,
+    g1_neighbour_patch,
+    tangent_plane_continuity,
+)
+from course_lib.homework.checks.lectures import check_number
+from course_lib.plotting.lecture_figures import (
     domain_and_patch_figure,
     parameter_lines_figure,
     patch_pairs_figure,
 )
-from ..plotting.surface_figures import plot_domain_and_patch, plot_parameter_lines
-from ..plotting.surfaces3d import plot_patch_pair
-from ..surfaces import BezierPatch, g1_neighbour_patch, tangent_plane_continuity
+from course_lib.plotting.surface_figures import plot_domain_and_patch, plot_parameter_lines
+from course_lib.plotting.surfaces3d import plot_patch_pair
 
 __all__ = [
     "BezierPatch",

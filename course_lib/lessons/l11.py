@@ -6,10 +6,8 @@ defined and documented in the module it is imported from.
 
 from __future__ import annotations
 
-from ..beta_splines import cubic_beta_spline, quadratic_beta_spline
-from ..checks.lectures import check_number, quiz
-from ..continuity import curve_continuity, joint_continuity
-from ..outlines import (
+from course_lib.constructions.beta_splines import cubic_beta_spline, quadratic_beta_spline
+from course_lib.constructions.outlines import (
     Contour,
     Outline,
     classify_joints,
@@ -18,9 +16,11 @@ from ..outlines import (
     glyph_summary,
     svg_outline,
 )
-from ..plotting import new_figure, plot_outline
-from ..plotting.lecture_figures import glyph_points_figure, glyphs_figure, outlines_figure
-from ..widgets import glyph_demo
+from course_lib.geometry.continuity import curve_continuity, joint_continuity
+from course_lib.homework.checks.lectures import check_number, quiz
+from course_lib.plotting import new_figure, plot_outline
+from course_lib.plotting.lecture_figures import glyph_points_figure, glyphs_figure, outlines_figure
+from course_lib.widgets import glyph_demo
 
 __all__ = [
     "Contour",

@@ -14,8 +14,12 @@ construction diagrams), :mod:`.blending` (blending functions), :mod:`.surfaces3d
 
 from __future__ import annotations
 
-from .blending import BlendingArtists, blending_functions, plot_blending_functions
-from .constructions import (
+from course_lib.plotting.blending import (
+    BlendingArtists,
+    blending_functions,
+    plot_blending_functions,
+)
+from course_lib.plotting.constructions import (
     Diagram,
     plot_beta_spline_construction,
     plot_farin_boehm,
@@ -23,18 +27,25 @@ from .constructions import (
     plot_knot_joint_construction,
     plot_stitching,
 )
-from .curvature import (
+from course_lib.plotting.curvature import (
     CombArtists,
     CurvatureProfileArtists,
     curvature_profile,
     plot_curvature_comb,
     plot_curvature_profile,
 )
-from .curves import CurveArtists, PointsArtists, plot_control_polygon, plot_curve
-from .outlines import OutlineArtists, plot_outline
-from .style import COURSE_RC, OKABE_ITO, ROLE_COLORS, course_style, new_figure, segment_color
-from .surfaces3d import PatchPairArtists, plot_patch, plot_patch_pair
-from .vectors import (
+from course_lib.plotting.curves import CurveArtists, PointsArtists, plot_control_polygon, plot_curve
+from course_lib.plotting.outlines import OutlineArtists, plot_outline
+from course_lib.plotting.style import (
+    COURSE_RC,
+    OKABE_ITO,
+    ROLE_COLORS,
+    course_style,
+    new_figure,
+    segment_color,
+)
+from course_lib.plotting.surfaces3d import PatchPairArtists, plot_patch, plot_patch_pair
+from course_lib.plotting.vectors import (
     FrameArtists,
     OsculatingCircleArtists,
     VectorArtists,

@@ -16,9 +16,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._validation import check_integer
-from ..sampling import segment_samples
-from .style import OKABE_ITO, SIZES
+from course_lib.geometry.sampling import segment_samples
+from course_lib.plotting.style import OKABE_ITO, SIZES
+from course_lib.validation import check_integer
 
 __all__ = ["BlendingArtists", "blending_functions", "plot_blending_functions"]
 

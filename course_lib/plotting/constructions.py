@@ -15,6 +15,9 @@
 The diagrams *read* the geometry (control points, ``curve.info``); they compute
 nothing but where to put labels.  All return a :class:`Diagram` whose ``update``
 moves every artist to new points (for widgets).
+
+Why this module is long: each construction diagram (stitching, Farin-Boehm, Beta-spline,
+knot joint) is one function with its labels, and they share the diagram type and its styles.
 """
 
 from __future__ import annotations
@@ -25,9 +28,9 @@ from itertools import pairwise
 
 import numpy as np
 
-from .._validation import as_points
-from .curves import plot_curve
-from .style import OKABE_ITO, ROLE_COLORS, SIZES
+from course_lib.plotting.curves import plot_curve
+from course_lib.plotting.style import OKABE_ITO, ROLE_COLORS, SIZES
+from course_lib.validation import as_points
 
 __all__ = [
     "Diagram",
@@ -202,7 +205,7 @@ def plot_g1_stitch(
     ]
     diagram = Diagram(pts, lines, lab, ratios)
     if curve:
-        from ..curve import PiecewiseBezier
+        from course_lib.curves.curve import PiecewiseBezier
 
         diagram.artists["curve"] = plot_curve(
             ax, PiecewiseBezier([V, W]), polygon=False, points=False
@@ -275,7 +278,7 @@ def plot_farin_boehm(
     ]
     diagram = Diagram(pts, lines, lab, ratios)
     if curve:
-        from ..curve import PiecewiseBezier
+        from course_lib.curves.curve import PiecewiseBezier
 
         diagram.artists["curve"] = plot_curve(
             ax, PiecewiseBezier([V, W]), polygon=False, points=False
@@ -305,7 +308,7 @@ def plot_stitching(ax, curve, *, labels: bool = True) -> Diagram:
 
     Reads ``curve.segments`` (``V``, ``W``) and ``curve.info`` (``"beta1"``, ``"beta2"``,
     or ``"T"``, ``"gamma"``): Fig. 8 (Farin-Boehm, ``T`` from
-    :func:`course_lib.stitching.farin_boehm`) for a G2 stitch, else Fig. 7 (G1).
+    :func:`course_lib.constructions.stitching.farin_boehm`) for a G2 stitch, else Fig. 7 (G1).
     """
     if curve.n_segments != 2:
         raise ValueError(
@@ -318,7 +321,7 @@ def plot_stitching(ax, curve, *, labels: bool = True) -> Diagram:
     T = _info_get(info, "T")
     gamma = _first(_info_get(info, "gamma"))
     if T is None and b1 is not None and b2 is not None:
-        from ..stitching import farin_boehm
+        from course_lib.constructions.stitching import farin_boehm
 
         fb = farin_boehm(V[-3:], b1, b2, V.shape[0] - 1)
         T, gamma = fb.T, fb.gamma

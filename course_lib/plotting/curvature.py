@@ -11,15 +11,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import differential_geometry as dg
-from .._validation import check_integer
-from ..sampling import (
-    segment_arc_lengths,
+from course_lib.geometry import differential_geometry as dg
+from course_lib.geometry.arc_length import segment_arc_lengths
+from course_lib.geometry.sampling import (
     segment_derivatives,
     segment_grid,
     tangent_and_curvature,
 )
-from .style import ROLE_COLORS, SIZES, segment_color
+from course_lib.plotting.style import ROLE_COLORS, SIZES, segment_color
+from course_lib.validation import check_integer
 
 __all__ = [
     "CombArtists",
@@ -50,7 +50,7 @@ def comb_teeth(curve, per_segment: int, scale: float, side: int = -1):
 def _frame_samples(curve, per_segment: int):
     """Points, unit tangents ``T`` and curvature vectors ``K = dT/ds`` on the segment grid,
     each ``(S, n, dim)``, from one pass over the derivatives (cached Bernstein matrices,
-    :func:`~course_lib.sampling.segment_derivatives`).
+    :func:`~course_lib.geometry.sampling.segment_derivatives`).
 
     Raises
     ------
@@ -196,7 +196,7 @@ def curvature_profile(
 
     ``arc_length_every = k > 1`` computes the arc length (the costly part) at every k-th
     sample and at both ends of every segment (fixed Gauss-Legendre sums with cached
-    Bernstein matrices, :func:`~course_lib.sampling.segment_arc_lengths`), and
+    Bernstein matrices, :func:`~course_lib.geometry.arc_length.segment_arc_lengths`), and
     linearly in the parameter between them -- for live widgets; the joints stay exact.
     """
     if x not in ("arc_length", "parameter"):

@@ -11,9 +11,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .._validation import as_points
-from ..sampling import segment_samples
-from .style import ROLE_COLORS, SIZES, segment_color
+from course_lib.geometry.sampling import segment_samples
+from course_lib.plotting.style import ROLE_COLORS, SIZES, segment_color
+from course_lib.validation import as_points
 
 __all__ = [
     "CurveArtists",
@@ -103,7 +103,7 @@ def plot_curve(
     equal_aspect: bool = True,
     zorder: float = 3,
 ) -> CurveArtists:
-    """Draw a plane :class:`~course_lib.curve.PiecewiseBezier` with its Bézier control polygons.
+    """Draw a plane :class:`~course_lib.curves.curve.PiecewiseBezier` with its Bézier control polygons.
 
     Parameters
     ----------

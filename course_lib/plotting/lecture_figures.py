@@ -3,6 +3,9 @@
 Each function takes curves and points the lecture has already computed (no mathematics is
 done here), draws them in the course style and returns the figure.  The notebook cell that
 calls it is named in the docstring; the caption is the lecture's prose around that cell.
+
+Why this module is long: every lecture figure is a one-line call the lectures import from
+here; each function is short.
 """
 
 from __future__ import annotations
@@ -11,15 +14,20 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from .constructions import (
+from course_lib.plotting.constructions import (
     plot_beta_spline_construction,
     plot_farin_boehm,
     plot_stitching,
 )
-from .curvature import plot_curvature_comb, plot_curvature_profile
-from .curves import plot_control_polygon, plot_curve
-from .style import OKABE_ITO, ROLE_COLORS, new_figure
-from .vectors import plot_frame, plot_osculating_circle, plot_vectors, plot_velocity
+from course_lib.plotting.curvature import plot_curvature_comb, plot_curvature_profile
+from course_lib.plotting.curves import plot_control_polygon, plot_curve
+from course_lib.plotting.style import OKABE_ITO, ROLE_COLORS, new_figure
+from course_lib.plotting.vectors import (
+    plot_frame,
+    plot_osculating_circle,
+    plot_vectors,
+    plot_velocity,
+)
 
 __all__ = [
     "bezier_figure",
@@ -54,7 +62,7 @@ __all__ = [
 
 
 def _bezier(points):
-    from ..curve import PiecewiseBezier  # a container for drawing, no computation
+    from course_lib.curves.curve import PiecewiseBezier  # a container for drawing, no computation
 
     return PiecewiseBezier([np.asarray(points, dtype=float)])
 
@@ -225,7 +233,7 @@ def example1_figure(ex1, dq, dr, typo=None):
 
 def reparametrization_figure(Q, f, v0: float):
     """Lecture 02, ``nb02-039`` (Barsky & DeRose 1988, Fig. 3): ``Q`` and ``Q∘f``."""
-    from .reparametrization_figure import plot_reparametrization
+    from course_lib.plotting.reparametrization_figure import plot_reparametrization
 
     fig, axes = new_figure(1, 2, figsize=(8.8, 4.2))
     plot_reparametrization(axes, Q, f, v0)
@@ -303,9 +311,9 @@ def closeness_figure(circle, others, t):
     """Lecture 05, ``nb05-038`` (Finn, Fig. 3): top, each curve of ``others`` (a list of
     ``(curve or samples, label, title)``) over the circle (grey); bottom, their signed
     curvature against arc length over the circle's κ = 1.  A curve given as samples of
-    :func:`~course_lib.differential_geometry.curve_from_curvature` (``s``, ``points``,
+    :func:`~course_lib.geometry.differential_geometry.curve_from_curvature` (``s``, ``points``,
     ``angle``) has its curvature read off the tangent angle, κ = dθ/ds."""
-    from ..differential_geometry import signed_curvature
+    from course_lib.geometry.differential_geometry import signed_curvature
 
     ref = circle.evaluate(t)
     fig, axes = new_figure(2, len(others), figsize=(8.8, 5.6))
@@ -378,7 +386,7 @@ def splines_figure(splines: Mapping[str, object], *, control_points=False, refer
 
 def knot_joint_figure(spline, joint: int, title: str):
     """Lecture 06, ``nb06-057`` (Finn, Fig. 7): a copy of the knot interval beside a leg."""
-    from .constructions import plot_knot_joint_construction
+    from course_lib.plotting.constructions import plot_knot_joint_construction
 
     fig, ax = new_figure(figsize=(8.6, 4))
     plot_knot_joint_construction(ax, spline, joints=[joint], offset=-0.12)
@@ -410,7 +418,7 @@ def quartic_conventions_figure(P, rows: Mapping[float, tuple]):
 
 def domain_and_patch_figure(F):
     """Lecture 10, ``nb10-026`` (DeRose & Barsky 1985, Fig. 6): the domain and the patch."""
-    from .surface_figures import plot_domain_and_patch
+    from course_lib.plotting.surface_figures import plot_domain_and_patch
 
     fig, ax = new_figure(figsize=(7, 5.5), projection="3d")
     plot_domain_and_patch(ax, F)
@@ -420,7 +428,7 @@ def domain_and_patch_figure(F):
 
 def parameter_lines_figure(F, to_uv):
     """Lecture 10, ``nb10-033`` (Fig. 8): parameter lines of ``F`` and of ``F∘to_uv``."""
-    from .surface_figures import plot_parameter_lines
+    from course_lib.plotting.surface_figures import plot_parameter_lines
 
     fig, (a1, a2) = new_figure(1, 2, figsize=(8.8, 4.2), projection="3d")
     plot_parameter_lines(a1, F)
@@ -433,7 +441,7 @@ def parameter_lines_figure(F, to_uv):
 def patch_pairs_figure(F, pairs: Mapping[str, object]):
     """Lecture 10, ``nb10-047`` (Fig. 7): per ``title: G`` the pair F, G with the normals of
     both along their common boundary, seen from one low angle."""
-    from .surfaces3d import plot_patch_pair
+    from course_lib.plotting.surfaces3d import plot_patch_pair
 
     fig, axes = new_figure(1, len(pairs), figsize=(8.2, 4.1), projection="3d")
     for ax, (title, G) in zip(np.atleast_1d(axes), pairs.items(), strict=True):
@@ -448,7 +456,7 @@ def patch_pairs_figure(F, pairs: Mapping[str, object]):
 def glyph_points_figure(outline, implied):
     """Lecture 11, ``nb11-007``: a glyph's points and segments, its ``implied`` on-curve
     points marked."""
-    from .outlines import plot_outline
+    from course_lib.plotting.outlines import plot_outline
 
     fig, ax = new_figure(figsize=(5.2, 5.2))
     plot_outline(ax, outline, comb=False, polygon=True, marks=(), legend=False)
@@ -462,7 +470,7 @@ def _kind_legend(fig, kinds):
     """One legend for the joint kinds of all panels, without per-panel counts."""
     from matplotlib.lines import Line2D
 
-    from .outlines import MARK_STYLES
+    from course_lib.plotting.outlines import MARK_STYLES
 
     handles = [
         Line2D(
@@ -483,7 +491,7 @@ def _kind_legend(fig, kinds):
 
 def glyphs_figure(glyphs: Mapping[str, object]):
     """Lecture 11, ``nb11-014``: each glyph with its curvature comb and joints, two per row."""
-    from .outlines import plot_outline
+    from course_lib.plotting.outlines import plot_outline
 
     rows = (len(glyphs) + 1) // 2
     fig, axes = new_figure(rows, 2, figsize=(8.8, 3.9 * rows))
@@ -498,7 +506,7 @@ def glyphs_figure(glyphs: Mapping[str, object]):
 
 def outlines_figure(outlines, **style):
     """Lecture 11, ``nb11-022``: outlines side by side with combs, titled by their names."""
-    from .outlines import plot_outline
+    from course_lib.plotting.outlines import plot_outline
 
     fig, axes = new_figure(1, len(outlines), figsize=(8.8, 4.2))
     for ax, outline in zip(np.atleast_1d(axes), outlines, strict=True):

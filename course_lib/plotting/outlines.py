@@ -1,8 +1,8 @@
 """The font editor's view of an outline: contours, curvature combs, corners and smooth points.
 
-:func:`plot_outline` draws every contour of a :class:`~course_lib.outlines.Outline`
+:func:`plot_outline` draws every contour of a :class:`~course_lib.constructions.outlines.Outline`
 (glyph or SVG path) with one common curvature comb scale, and marks each joint by its
-kind from :func:`~course_lib.outlines.classify_joints`: corners, smooth points that are
+kind from :func:`~course_lib.constructions.outlines.classify_joints`: corners, smooth points that are
 only G1 (the comb jumps there), G2 smooth points, singular joints.
 """
 
@@ -12,10 +12,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..outlines import JointTable, Outline, classify_joints
-from .curvature import CombArtists, comb_teeth, plot_curvature_comb
-from .curves import CurveArtists, plot_curve
-from .style import OKABE_ITO, SIZES
+from course_lib.constructions.outlines import JointTable, Outline, classify_joints
+from course_lib.plotting.curvature import CombArtists, comb_teeth, plot_curvature_comb
+from course_lib.plotting.curves import CurveArtists, plot_curve
+from course_lib.plotting.style import OKABE_ITO, SIZES
 
 __all__ = ["MARK_STYLES", "OutlineArtists", "comb_scale_for", "plot_outline"]
 
@@ -124,7 +124,7 @@ def plot_outline(
         points are the middle control points of its quadratics).
     legend : bool
     **classify
-        Tolerances passed to :func:`~course_lib.outlines.classify_joints`.
+        Tolerances passed to :func:`~course_lib.constructions.outlines.classify_joints`.
 
     Returns
     -------

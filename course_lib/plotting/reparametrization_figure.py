@@ -11,9 +11,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from .curves import plot_curve
-from .style import OKABE_ITO
-from .vectors import plot_vectors
+from course_lib.plotting.curves import plot_curve
+from course_lib.plotting.style import OKABE_ITO
+from course_lib.plotting.vectors import plot_vectors
 
 __all__ = ["plot_reparametrization"]
 

@@ -2,7 +2,7 @@
 parameter lines of a patch under a change of parameters (Fig. 8).
 
 Like every plotting module, these take a 3D Axes and return their artists; the points
-come from :class:`~course_lib.surfaces.BezierPatch` (the math layer).
+come from :class:`~course_lib.constructions.surfaces.BezierPatch` (the math layer).
 """
 
 from __future__ import annotations
@@ -11,9 +11,9 @@ from collections.abc import Callable
 
 import numpy as np
 
-from .._validation import check_integer
-from .style import OKABE_ITO
-from .surfaces3d import _require_3d, plot_patch
+from course_lib.plotting.style import OKABE_ITO
+from course_lib.plotting.surfaces3d import plot_patch, require_3d
+from course_lib.validation import check_integer
 
 __all__ = ["plot_domain_and_patch", "plot_parameter_lines"]
 
@@ -29,7 +29,7 @@ def plot_domain_and_patch(ax, patch, *, below: float = 2.0) -> dict:
     -------
     dict with ``patch``, ``domain``, ``label``, ``domain_arrow``, ``normal``.
     """
-    _require_3d(ax)
+    require_3d(ax)
     N = patch.control_net.reshape(-1, 3)
     (x0, y0, z0), (x1, y1, z1) = N.min(axis=0), N.max(axis=0)
     zd = z0 - below
@@ -60,7 +60,7 @@ def plot_parameter_lines(
 
     Returns the wireframe artist.
     """
-    _require_3d(ax)
+    require_3d(ax)
     n = check_integer(lines, "lines", minimum=2)
     s = np.linspace(0.0, 1.0, n)
     if change is None:

@@ -12,13 +12,13 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .._validation import check_integer
-from .style import OKABE_ITO, ROLE_COLORS
+from course_lib.plotting.style import OKABE_ITO, ROLE_COLORS
+from course_lib.validation import check_integer
 
 __all__ = ["PatchArtists", "PatchPairArtists", "plot_patch", "plot_patch_pair"]
 
 
-def _require_3d(ax) -> None:
+def require_3d(ax) -> None:
     if getattr(ax, "name", "") != "3d":
         raise ValueError(
             "surface pictures need a 3D Axes: new_figure(projection='3d') or "
@@ -44,7 +44,7 @@ def plot_patch(
     alpha: float = 0.55,
     label: str | None = None,
 ) -> PatchArtists:
-    """Draw a :class:`~course_lib.surfaces.BezierPatch` as a shaded surface with its control net.
+    """Draw a :class:`~course_lib.constructions.surfaces.BezierPatch` as a shaded surface with its control net.
 
     Parameters
     ----------
@@ -53,7 +53,7 @@ def plot_patch(
     resolution : int
         Samples per parameter direction.
     """
-    _require_3d(ax)
+    require_3d(ax)
     n = check_integer(resolution, "resolution", minimum=2)
     color = color or OKABE_ITO["blue"]
     s = np.linspace(0.0, 1.0, n)
@@ -133,7 +133,7 @@ def plot_patch_pair(
     ValueError
         If ``ax`` is not 3D, or a patch is not regular on the boundary.
     """
-    _require_3d(ax)
+    require_3d(ax)
     k = check_integer(n_normals, "n_normals", minimum=1)
     if not (isinstance(zoom, (int, float)) and 0.25 <= zoom <= 4):
         raise ValueError(f"zoom must be a number between 0.25 and 4, got {zoom!r}")
@@ -190,7 +190,7 @@ def plot_patch_pair(
     for axis in (ax.xaxis, ax.yaxis, ax.zaxis):  # few ticks: the numbers are not the point
         axis.set_major_locator(MaxNLocator(4))
     motion = None
-    from ._motion import LightWhileRotating, is_interactive_canvas
+    from course_lib.plotting._motion import LightWhileRotating, is_interactive_canvas
 
     if is_interactive_canvas(ax.get_figure(root=True).canvas):
         # turning the picture with the mouse: coarse surfaces and a frozen layout until release

@@ -13,11 +13,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import differential_geometry as dg
-from .._validation import as_parameter_array, as_points, check_integer, check_positive
-from ..parametrization import as_parametrization, check_in_domain
-from ..sampling import point_derivatives, tangent_and_curvature
-from .style import ROLE_COLORS, SIZES
+from course_lib.curves.parametrization import as_parametrization, check_in_domain
+from course_lib.geometry import differential_geometry as dg
+from course_lib.geometry.sampling import point_derivatives, tangent_and_curvature
+from course_lib.plotting.style import ROLE_COLORS, SIZES
+from course_lib.validation import as_parameter_array, as_points, check_integer, check_positive
 
 __all__ = [
     "FrameArtists",

@@ -20,7 +20,7 @@ Layout: ``state`` (what a demo is: :class:`CurveDemoState`), ``view`` (how it is
 :class:`Demo`, sliders, selectors), ``_controls`` (a curve demo's standard controls),
 ``access`` (keyboard and screen readers), ``demos``, ``reparam``, ``outlines`` (the demos).
 No widget module computes: the numbers come from the math modules
-(:func:`course_lib.continuity.joint_report` for the live report).
+(:func:`course_lib.geometry.continuity.joint_report` for the live report).
 
 Demos follow the hand: only moving artists are redrawn (:class:`BlitView`), queued input is
 coalesced (``_coalesce``), a released point lands under the mouse and the release sends a
@@ -29,9 +29,11 @@ full frame; ``cl-check-details`` shows the report's higher orders and residuals.
 
 from __future__ import annotations
 
-from ..continuity import joint_report  # kept here for callers of the demos' report
-from .assembly import Demo
-from .demos import (
+from course_lib.geometry.continuity import (
+    joint_report,  # kept here for callers of the demos' report
+)
+from course_lib.widgets.assembly import Demo
+from course_lib.widgets.demos import (
     beta_spline_demo,
     catmull_rom_demo,
     curvature_comb_demo,
@@ -40,11 +42,11 @@ from .demos import (
     quartic_beta_spline_demo,
     reparametrization_demo,
 )
-from .interactor import PointDragger
-from .outlines import GlyphDemoState, glyph_demo
-from .reparam import ReparametrizationState
-from .state import CurveDemoState, SliderSpec
-from .view import BlitView, CurveDemoView
+from course_lib.widgets.interactor import PointDragger
+from course_lib.widgets.outlines import GlyphDemoState, glyph_demo
+from course_lib.widgets.reparam import ReparametrizationState
+from course_lib.widgets.state import CurveDemoState, SliderSpec
+from course_lib.widgets.view import BlitView, CurveDemoView
 
 __all__ = [
     "BlitView",

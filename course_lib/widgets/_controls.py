@@ -8,8 +8,16 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from .assembly import LABELLED, Demo, details_checkbox, observe, selector, slider, snap_to_step
-from .state import CurveDemoState, SliderSpec
+from course_lib.widgets.assembly import (
+    LABELLED,
+    Demo,
+    details_checkbox,
+    observe,
+    selector,
+    slider,
+    snap_to_step,
+)
+from course_lib.widgets.state import CurveDemoState, SliderSpec
 
 __all__ = ["assemble_curve_demo"]
 
@@ -56,12 +64,12 @@ def assemble_curve_demo(
     rows.extend(extra_rows)
     rows.append(details_checkbox(demo))
     if draggable:  # keyboard access to the points, and the live verdict (widgets/access.py)
-        from .access import point_controls
+        from course_lib.widgets.access import point_controls
 
         rows.append(point_controls(demo))
     demo.build_widgets(rows)
     if draggable:
-        from .interactor import PointDragger
+        from course_lib.widgets.interactor import PointDragger
 
         demo.dragger = PointDragger(
             demo.view.ax,

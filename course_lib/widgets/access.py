@@ -33,8 +33,13 @@ from collections.abc import Callable
 
 import numpy as np
 
-from .assembly import selector
-from .view import BlitView, ring_marker
+from course_lib.widgets.assembly import selector
+from course_lib.widgets.slider_names import (
+    SLIDER_NAMES_JS,
+    publish_slider_names,
+    slider_names_bundle,
+)
+from course_lib.widgets.view import BlitView, ring_marker
 
 __all__ = [
     "SLIDER_NAMES_JS",
@@ -48,78 +53,6 @@ __all__ = [
 #: Front-end fix-up for ipywidgets' sliders inside course demos (idempotent; one
 #: MutationObserver per page): ``aria-label`` from the description, ``aria-valuetext`` from
 #: the readout; the canvas gets a name (``role="img"``).
-SLIDER_NAMES_JS = r"""
-(() => {
-  if (window.__courseSliderNames) { window.__courseSliderNames(); return; }
-  const fix = () => {
-    // JupyterLab's command-mode shortcuts (arrows, Enter, ...) would take the keys from the
-    // demo's selects, buttons and slider handles: Lumino skips an element with this attribute
-    // (it must be on the focused element itself: the shortcut's selector matches it first)
-    const controls = '.cl-demo select, .cl-demo input, .cl-demo button, .cl-demo [tabindex]';
-    for (const el of document.querySelectorAll(controls)) {
-      if (!el.hasAttribute('data-lm-suppress-shortcuts')) {
-        el.setAttribute('data-lm-suppress-shortcuts', 'true');
-      }
-    }
-    for (const box of document.querySelectorAll('.cl-demo .widget-slider')) {
-      const handle = box.querySelector('.noUi-handle');
-      const label = box.querySelector('.widget-label');
-      const readout = box.querySelector('.widget-readout');
-      if (!handle) continue;
-      const name = label ? label.textContent.trim() : '';
-      if (name && handle.getAttribute('aria-label') !== name) handle.setAttribute('aria-label', name);
-      const text = readout ? readout.textContent.trim() : '';
-      if (text && handle.getAttribute('aria-valuetext') !== text) handle.setAttribute('aria-valuetext', text);
-      if (readout && name && readout.getAttribute('aria-label') !== name + ' value') {
-        readout.setAttribute('aria-label', name + ' value');
-      }
-    }
-    for (const canvas of document.querySelectorAll('.cl-demo canvas')) {
-      if (!canvas.getAttribute('aria-label')) {
-        canvas.setAttribute('role', 'img');
-        canvas.setAttribute('aria-label', 'demo figure: the curve, its control points and ' +
-          'the selected joint; move a point with the point controls below the figure');
-      }
-    }
-  };
-  let queued = false;
-  const later = () => {
-    if (queued) return;
-    queued = true;
-    requestAnimationFrame(() => { queued = false; fix(); });
-  };
-  window.__courseSliderNames = fix;
-  new MutationObserver(later).observe(document.body, {
-    subtree: true, childList: true, characterData: true,
-    attributes: true, attributeFilter: ['aria-valuetext'],
-  });
-  fix();
-})();
-"""
-
-
-def slider_names_bundle() -> dict:
-    """The display bundle of :data:`SLIDER_NAMES_JS` (``application/javascript``).
-
-    JupyterLab and Voilà run it for outputs of the running session (trusted); elsewhere it
-    is inert and the sliders keep ipywidgets' own (unnamed) handles.
-    """
-    return {"application/javascript": SLIDER_NAMES_JS, "text/plain": ""}
-
-
-def publish_slider_names() -> None:
-    """Send :data:`SLIDER_NAMES_JS` to the front end (inside IPython only; else nothing)."""
-    import sys
-
-    ipython = sys.modules.get("IPython")
-    shell = ipython.get_ipython() if ipython is not None else None
-    if shell is None or not hasattr(shell, "display_pub"):
-        return
-    from IPython.display import publish_display_data
-
-    publish_display_data(slider_names_bundle())
-
-
 def verdict(state) -> str:
     """The continuity report's verdict in one sentence (what a screen reader announces).
 
@@ -249,7 +182,7 @@ class PointControls:
         self.ring = None
         view = getattr(demo, "view", None)
         if view is not None and getattr(view, "ax", None) is not None:
-            from ..plotting.style import OKABE_ITO
+            from course_lib.plotting.style import OKABE_ITO
 
             self.ring = ring_marker(
                 view.ax, OKABE_ITO["black"], ms=17, mew=2.0, zorder=9, label="_selected point"

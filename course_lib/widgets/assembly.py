@@ -19,8 +19,8 @@ from collections.abc import Callable, Sequence
 
 import numpy as np
 
-from .report import warning_span
-from .state import SliderSpec
+from course_lib.widgets.report import warning_span
+from course_lib.widgets.state import SliderSpec
 
 __all__ = [
     "LABELLED",
@@ -226,7 +226,7 @@ class Demo:
     # ----------------------------------------------------------- display
     def _repr_mimebundle_(self, **kwargs):
         if self.widget is not None:
-            from .access import publish_slider_names
+            from course_lib.widgets.slider_names import publish_slider_names
 
             publish_slider_names()  # names the slider handles (ipywidgets leaves them unnamed)
             return self.widget._repr_mimebundle_(**kwargs)
@@ -250,7 +250,7 @@ def observe(demo: Demo, widget, fn) -> None:
     """``widget.observe(fn)`` on ``value``, guarded (errors shown) and coalesced: a value
     from the browser that waited behind the previous redraw is superseded by the newest.
     A value set by code (ipywidgets holds no property lock for it) is handled at once."""
-    from ._coalesce import Coalescer
+    from course_lib.widgets._coalesce import Coalescer
 
     def from_browser() -> bool:
         return "value" in getattr(widget, "_property_lock", {})

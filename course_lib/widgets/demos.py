@@ -15,6 +15,9 @@ an initial value outside its slider's range with a ``ValueError`` naming the ran
 (never silently clamped); slider ranges never allow an invalid value (β1 > 0, knots
 kept in order); a degenerate configuration reached by dragging shows a warning in the
 report instead of raising.
+
+Why this module is long: one function per demo, each wiring its sliders to one construction
+through the shared demo assembly.
 """
 
 from __future__ import annotations
@@ -23,12 +26,12 @@ from dataclasses import replace
 
 import numpy as np
 
-from .._validation import as_points
-from ._controls import assemble_curve_demo
-from .assembly import Demo, resolve_static
-from .reparam import reparametrization_demo
-from .state import CurveDemoState, SliderSpec
-from .view import CurveDemoView
+from course_lib.validation import as_points
+from course_lib.widgets._controls import assemble_curve_demo
+from course_lib.widgets.assembly import Demo, resolve_static
+from course_lib.widgets.reparam import reparametrization_demo
+from course_lib.widgets.state import CurveDemoState, SliderSpec
+from course_lib.widgets.view import CurveDemoView
 
 __all__ = [
     "BETA1",
@@ -101,7 +104,7 @@ def _finish(
 
 # ------------------------------------------------------------ curvature comb
 def _default_g1_curve():
-    from ..curve import PiecewiseBezier
+    from course_lib.curves.curve import PiecewiseBezier
 
     V = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.5], [4.0, 1.0]])
     W1 = V[3] + (V[3] - V[2])  # on the ray: G1 (and C1); W2 free: not G2
@@ -119,7 +122,7 @@ def curvature_comb_demo(curve=None, *, static: bool | None = None) -> Demo:
     TypeError, ValueError
         If ``curve`` is not a plane PiecewiseBezier.
     """
-    from ..curve import PiecewiseBezier
+    from course_lib.curves.curve import PiecewiseBezier
 
     curve = _default_g1_curve() if curve is None else curve
     if not isinstance(curve, PiecewiseBezier):
@@ -182,10 +185,10 @@ def catmull_rom_demo(points=None, beta1=1.0, *, static: bool | None = None) -> D
     Raises
     ------
     ValueError
-        From :func:`course_lib.catmull_rom.catmull_rom` for bad initial data (β1 <= 0,
+        From :func:`course_lib.constructions.catmull_rom.catmull_rom` for bad initial data (β1 <= 0,
         fewer than 4 points, ...).
     """
-    from ..catmull_rom import catmull_rom
+    from course_lib.constructions.catmull_rom import catmull_rom
 
     P = as_points(_CR_DEFAULT if points is None else points, "points", min_points=1, dims=(2,))
     c0 = catmull_rom(P, beta1=beta1)  # bad data raises here, with the math layer's message
@@ -234,9 +237,9 @@ def beta_spline_demo(
     Raises
     ------
     ValueError
-        From :mod:`course_lib.beta_splines` for bad initial data (β1 <= 0, too few points).
+        From :mod:`course_lib.constructions.beta_splines` for bad initial data (β1 <= 0, too few points).
     """
-    from ..beta_splines import cubic_beta_spline, quadratic_beta_spline
+    from course_lib.constructions.beta_splines import cubic_beta_spline, quadratic_beta_spline
 
     if degree not in (2, 3):
         raise ValueError(f"degree must be 2 (quadratic G1) or 3 (cubic G2); got {degree!r}")
@@ -301,12 +304,12 @@ def quartic_beta_spline_demo(
     TypeError
         If a shape parameter is not a real number (global values only).
     ValueError
-        From :func:`course_lib.higher_order.quartic_beta_spline` for bad initial data
+        From :func:`course_lib.constructions.beta_splines.quartic_beta_spline` for bad initial data
         (β1 <= 0, fewer than 5 points, a basis that is not unique); for an initial value
         outside its slider's range.
     """
-    from .._validation import check_finite_scalar
-    from ..higher_order import quartic_beta_spline
+    from course_lib.constructions.beta_splines import quartic_beta_spline
+    from course_lib.validation import check_finite_scalar
 
     P = as_points(_QUARTIC_DEFAULT if points is None else points, "points", min_points=1, dims=(2,))
     params = {
@@ -331,7 +334,7 @@ def quartic_beta_spline_demo(
 
 def _junction_marks(view):
     """Interior Bézier vertices (squares) of the Beta-spline, kept up to date."""
-    from ..plotting.style import OKABE_ITO
+    from course_lib.plotting.style import OKABE_ITO
 
     (art,) = view.ax.plot(
         [], [], ls="none", marker="s", ms=6, mfc=OKABE_ITO["bluish_green"], mec="black", zorder=6
@@ -354,9 +357,9 @@ def g2_stitch_demo(V=None, beta1=1.0, beta2=0.0, W3=None, *, static: bool | None
     Raises
     ------
     ValueError
-        From :func:`course_lib.stitching.g2_stitch` for bad data (β1 <= 0, ``V_2 = V_3``).
+        From :func:`course_lib.constructions.stitching.g2_stitch` for bad data (β1 <= 0, ``V_2 = V_3``).
     """
-    from ..stitching import g2_stitch
+    from course_lib.constructions.stitching import g2_stitch
 
     V = as_points(
         [[0, 0], [1, 1.5], [2.5, 2], [4, 1.6]] if V is None else V, "V", min_points=4, dims=(2,)
@@ -386,7 +389,7 @@ def _farin_boehm_overlay(view):
     """Farin-Boehm's diagram (seed 000 Fig. 8), kept up to date.  Where γ is undefined
     (β2 = -2β1(1 + β1), T at infinity) the parts built on T are hidden; the stitch itself
     stays valid (the report still shows G2)."""
-    from ..plotting.constructions import plot_farin_boehm
+    from course_lib.plotting.constructions import plot_farin_boehm
 
     V, W = view.state.curve.segments
     diagram = plot_farin_boehm(view.ax, V, W, V[-2], labels=True)  # T placed by update()
@@ -394,7 +397,7 @@ def _farin_boehm_overlay(view):
     on_T = [diagram.artists[k] for k in ("line:leg", "line:fan", "label:T")] + texts[1:]
 
     def update(state):
-        from ..stitching import farin_boehm
+        from course_lib.constructions.stitching import farin_boehm
 
         c = state.curve
         V, W = c.segments
@@ -429,9 +432,9 @@ def knot_spline_demo(d_points=None, knots=None, *, static: bool | None = None) -
     Raises
     ------
     ValueError
-        From :mod:`course_lib.knot_splines` for bad data (knots not increasing, wrong count).
+        From :mod:`course_lib.constructions.knot_splines` for bad data (knots not increasing, wrong count).
     """
-    from .. import knot_splines as ks
+    from course_lib.constructions import knot_splines as ks
 
     D = as_points(
         [[0, 0], [0.8, 2.2], [2.5, 3], [4.5, 2.6], [5.5, 0.4], [7.5, 0.2], [9, 2.5], [10, 0.5]]
@@ -463,7 +466,7 @@ def knot_spline_demo(d_points=None, knots=None, *, static: bool | None = None) -
 
 def _knot_overlay(view):
     """Joint points ``p_{3i}`` on the segments ``p_{3i-1} p_{3i+1}`` (dashed)."""
-    from ..plotting.style import OKABE_ITO
+    from course_lib.plotting.style import OKABE_ITO
 
     (art,) = view.ax.plot([], [], color=OKABE_ITO["bluish_green"], lw=1.4, ls="--", zorder=4)
 

@@ -51,7 +51,7 @@ class PointDragger:
         on_press: Callable[[int], None] | None = None,
         coalesce: bool = True,
     ) -> None:
-        from ._coalesce import Coalescer
+        from course_lib.widgets._coalesce import Coalescer
 
         self.ax = ax
         self.get_points = get_points

@@ -4,7 +4,7 @@
 >>> glyph_demo("S")                    # doctest: +SKIP
 
 The state (:class:`GlyphDemoState`) holds the glyph's raw TrueType points and asks the
-math layer (:mod:`course_lib.outlines`) for the contours and their joint kinds; the
+math layer (:mod:`course_lib.constructions.outlines`) for the contours and their joint kinds; the
 view draws them with :func:`~course_lib.plotting.outlines.plot_outline`.  Tests drive
 the state without a browser: ``demo.state.drag(k, x, y)``, ``demo.state.set_glyph("g")``.
 """
@@ -16,9 +16,14 @@ from collections.abc import Callable
 
 import numpy as np
 
-from ..outlines import KINDS, classify_joints, glyph_outline, truetype_outline
-from .assembly import Demo, resolve_static
-from .view import make_figure
+from course_lib.constructions.outlines import (
+    KINDS,
+    classify_joints,
+    glyph_outline,
+    truetype_outline,
+)
+from course_lib.widgets.assembly import Demo, resolve_static
+from course_lib.widgets.view import make_figure
 
 __all__ = ["DEMO_FONTS", "GlyphDemoState", "GlyphDemoView", "glyph_demo"]
 
@@ -149,7 +154,7 @@ class GlyphDemoView:
         state.listeners.append(self.on_change)
 
     def draw(self) -> None:
-        from ..plotting.outlines import plot_outline
+        from course_lib.plotting.outlines import plot_outline
 
         ax = self.ax
         ax.clear()
@@ -203,7 +208,7 @@ def glyph_demo(char: str = "S", font: str = "DejaVuSans", *, static: bool | None
         return demo
     import ipywidgets as w
 
-    from .interactor import PointDragger
+    from course_lib.widgets.interactor import PointDragger
 
     fonts = list(dict.fromkeys([font, *DEMO_FONTS]))
     text = w.Text(value=char, description="character", continuous_update=False)
@@ -223,7 +228,7 @@ def glyph_demo(char: str = "S", font: str = "DejaVuSans", *, static: bool | None
     view.dragger = PointDragger(
         view.ax, state.offcurve_points, demo.guard(lambda k, x, y: state.drag(k, x, y))
     )
-    from .access import point_controls
+    from course_lib.widgets.access import point_controls
 
     keys = point_controls(demo, state.offcurve_points, demo.guard(state.drag), label="off-curve ")
     demo.build_widgets([text, drop, keys])

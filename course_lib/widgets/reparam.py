@@ -13,11 +13,11 @@ import html
 
 import numpy as np
 
-from .._validation import as_points, check_finite_scalar
-from .assembly import Demo, resolve_static
-from .report import warning_paragraph
-from .state import SliderSpec
-from .view import BlitView, fit_equal_limits, make_figure
+from course_lib.validation import as_points, check_finite_scalar
+from course_lib.widgets.assembly import Demo, resolve_static
+from course_lib.widgets.report import warning_paragraph
+from course_lib.widgets.state import SliderSpec
+from course_lib.widgets.view import BlitView, fit_equal_limits, make_figure
 
 __all__ = ["ReparametrizationState", "reparametrization_demo"]
 
@@ -34,11 +34,11 @@ class ReparametrizationState:
     ------
     ValueError
         If ``|a| >= 1`` (then ``f`` is not orientation preserving), from
-        :class:`~course_lib.reparametrization.ChangeOfVariables`.
+        :class:`~course_lib.geometry.reparametrization.ChangeOfVariables`.
     """
 
     def __init__(self, points=None, a: float = 0.6, v: float = 0.3, samples: int = 11) -> None:
-        from ..curve import PiecewiseBezier
+        from course_lib.curves.curve import PiecewiseBezier
 
         self.points = as_points(
             _DEFAULT if points is None else points, "points", min_points=2, dims=(2,)
@@ -55,7 +55,7 @@ class ReparametrizationState:
 
     @staticmethod
     def _change(a: float):
-        from ..reparametrization import ChangeOfVariables
+        from course_lib.geometry.reparametrization import ChangeOfVariables
 
         return ChangeOfVariables.polynomial([0.0, 1.0 + a, -a], (0.0, 1.0), (0.0, 1.0))
 
@@ -71,15 +71,15 @@ class ReparametrizationState:
         self.update()
 
     def drag(self, k: int, x: float, y: float) -> None:
-        from ..curve import PiecewiseBezier
+        from course_lib.curves.curve import PiecewiseBezier
 
         self.points[k] = (x, y)
         self.curve = PiecewiseBezier([self.points])
         self.update()
 
     def compute(self) -> None:
-        from .. import differential_geometry as dg
-        from ..reparametrization import Reparametrized
+        from course_lib.geometry import differential_geometry as dg
+        from course_lib.geometry.reparametrization import Reparametrized
 
         self.reparametrized = Reparametrized(self.curve, self.f)
         u = float(self.f(self.v))
@@ -135,8 +135,8 @@ class ReparametrizationView(BlitView):
     the moving artists are redrawn (blitted over a cached background, :class:`BlitView`)."""
 
     def __init__(self, state: ReparametrizationState, static: bool) -> None:
-        from ..plotting import plot_control_polygon, plot_curve, plot_vectors
-        from ..plotting.style import OKABE_ITO, course_style
+        from course_lib.plotting import plot_control_polygon, plot_curve, plot_vectors
+        from course_lib.plotting.style import OKABE_ITO, course_style
 
         self.state = state
         self.fig = make_figure((10.0, 4.6), static)
@@ -232,15 +232,15 @@ def reparametrization_demo(
     if static:
         return demo
 
-    from .assembly import observe, slider, snap_to_step
-    from .interactor import PointDragger
+    from course_lib.widgets.assembly import observe, slider, snap_to_step
+    from course_lib.widgets.interactor import PointDragger
 
     sa = slider(A_SLIDER, state.a)
     sv = slider(V_SLIDER, state.v)
     demo.controls.update(a=sa, t=sv)
     observe(demo, sa, lambda ch: state.set_a(snap_to_step(A_SLIDER, ch["new"])))
     observe(demo, sv, lambda ch: state.set_t(snap_to_step(V_SLIDER, ch["new"])))
-    from .access import point_controls
+    from course_lib.widgets.access import point_controls
 
     demo.build_widgets([sa, sv, point_controls(demo)])
     demo.dragger = PointDragger(

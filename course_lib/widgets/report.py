@@ -4,7 +4,7 @@ A demo that builds G2 joints shows G- and C-order up to 2, the gap, the tangent 
 the curvature jump and β1, β2.  The analysis itself goes further (``max_order``, 3 by
 default); those higher orders, the Beta-constraint residuals and the three
 characterizations are shown when the student ticks "more detail", with one line that
-says what they mean.  Every number comes from :class:`course_lib.continuity.JointReport`.
+says what they mean.  Every number comes from :class:`course_lib.geometry.continuity.JointReport`.
 """
 
 from __future__ import annotations
@@ -96,7 +96,7 @@ def demo_report_html(report, order: int, details: bool = False) -> str:
             )
         )
     if details:
-        from ..continuity import CHARACTERIZATIONS
+        from course_lib.geometry.continuity import CHARACTERIZATIONS
 
         cap = report.max_order
         rows.append(

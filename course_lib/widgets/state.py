@@ -9,7 +9,7 @@
   it, so tests can use it directly.
 
 The math is called, never written here: every curve comes from the construction the demo
-was given, every report from :func:`course_lib.continuity.joint_report`.
+was given, every report from :func:`course_lib.geometry.continuity.joint_report`.
 """
 
 from __future__ import annotations
@@ -19,9 +19,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._validation import as_points, check_finite_scalar, check_integer
-from ..continuity import joint_report
-from .report import warning_paragraph
+from course_lib.geometry.continuity import joint_report
+from course_lib.validation import as_points, check_finite_scalar, check_integer
+from course_lib.widgets.report import warning_paragraph
 
 __all__ = ["CurveDemoState", "SliderSpec"]
 
@@ -263,7 +263,7 @@ class CurveDemoState:
         if self.warning:
             parts.append(warning_paragraph(self.warning))
         if self.report is not None:
-            from .report import demo_report_html
+            from course_lib.widgets.report import demo_report_html
 
             parts.append(demo_report_html(self.report, self.order, self.show_details))
         elif not self.warning:

@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 if TYPE_CHECKING:
-    from .state import CurveDemoState
+    from course_lib.widgets.state import CurveDemoState
 
 __all__ = [
     "CANVAS_WIDTH_ENV",
@@ -66,7 +66,7 @@ def _ipympl_canvas_classes():
 
     import matplotlib
 
-    from ..plotting.style import resolve_pyplot_backend
+    from course_lib.plotting.style import resolve_pyplot_backend
 
     resolve_pyplot_backend()
     before = matplotlib.get_backend() if "matplotlib.pyplot" in sys.modules else None
@@ -82,7 +82,7 @@ def make_figure(figsize: tuple[float, float], static: bool):
     (``canvas_width_px()`` wide: the dpi is chosen for it, the layout stays the same)."""
     from matplotlib.figure import Figure
 
-    from ..plotting.style import course_style
+    from course_lib.plotting.style import course_style
 
     dpi = 100.0 if static else canvas_width_px() / float(figsize[0])
     with course_style():
@@ -261,7 +261,7 @@ class CurveDemoView(BlitView):
         blit: bool | None = None,
         profile_samples: int | None = None,
     ) -> None:
-        from ..plotting import (
+        from course_lib.plotting import (
             plot_control_polygon,
             plot_curvature_comb,
             plot_curvature_profile,
@@ -269,7 +269,7 @@ class CurveDemoView(BlitView):
             plot_frame,
             plot_osculating_circle,
         )
-        from ..plotting.style import OKABE_ITO, course_style
+        from course_lib.plotting.style import OKABE_ITO, course_style
 
         self.state = state
         self._done: dict = {}  # what was last computed for which curve (see _once)

@@ -1,13 +1,13 @@
 """Hidden tests of homework 1 (run by tools/grade.py in the grader; never shipped to students).
 
 Form: see ``solutions/hidden_tests/README.md``.  Each ``qN(student)`` reads the answer as plain
-data (``student[...]``, ``student.function(...)``) and normalizes it with ``course_lib.answers``,
+data (``student[...]``, ``student.function(...)``) and normalizes it with ``course_lib.homework.answers``,
 the same code the feedback checks use.  Expected values are computed here from the question data
 with closed forms derived by hand (derivations next to them), never with course_lib's
 mathematics or the solution notebook's code.
 
 Per-student variants (issue 19): ``VARIANTS = True``, so the grader calls ``qN(student, data)``
-with the student's own data (``course_lib.variants.data("hw01", code)``: the default data
+with the student's own data (``course_lib.homework.variants.data("hw01", code)``: the default data
 without a course secret).  Every expected value is a generic formula of ``data``.
 :func:`answers_for` gives the worked answers of a variant (``tools/variant.py show``).
 """
@@ -18,7 +18,7 @@ import math
 
 import numpy as np
 
-from course_lib import answers
+from course_lib.homework import answers
 
 HOMEWORK = "hw01"
 POINTS = {"q1": 2, "q2": 3, "q3": 0, "q4": 2, "q5": 2, "q6": 0, "q7": 2}  # multiple choice: feedback only

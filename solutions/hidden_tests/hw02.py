@@ -1,13 +1,13 @@
 """Hidden tests of homework 2 (run by tools/grade.py in the grader; never shipped to students).
 
 Form: see ``solutions/hidden_tests/README.md``.  Answers arrive as plain data and are
-normalized with ``course_lib.answers`` (the feedback checks' code).  The symbolic answer of q4
+normalized with ``course_lib.homework.answers`` (the feedback checks' code).  The symbolic answer of q4
 is compared by its values at points chosen here (``student.expression``): student text is never
 parsed in the grader.  Expected values are derived by hand (derivations next to them), never
 with course_lib's mathematics or the solution notebook's code.
 
 Per-student variants (issue 19): ``VARIANTS = True``, so the grader calls ``qN(student, data)``
-with the student's own data (``course_lib.variants.data("hw02", code)``: the default data
+with the student's own data (``course_lib.homework.variants.data("hw02", code)``: the default data
 without a course secret).  Every expected value is a generic formula of ``data``; q3 (a
 function) and q4 (symbolic, no data) are the same for everyone.  :func:`answers_for` gives the
 worked answers of a variant (``tools/variant.py show``).
@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 
-from course_lib import answers
+from course_lib.homework import answers
 
 HOMEWORK = "hw02"
 POINTS = {"q1": 1, "q2": 2, "q3": 3, "q4": 2, "q5": 2, "q6": 0, "q7": 0}  # multiple choice: feedback only

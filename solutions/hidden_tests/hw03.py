@@ -1,14 +1,14 @@
 """Hidden tests of homework 3 (run by tools/grade.py in the grader; never shipped to students).
 
 Form: see ``solutions/hidden_tests/README.md``.  Answers arrive as plain data and are
-normalized with ``course_lib.answers`` (the feedback checks' code); the symbolic answer of q6 is
+normalized with ``course_lib.homework.answers`` (the feedback checks' code); the symbolic answer of q6 is
 compared by its values at points chosen here.  Expected values are derived by hand (derivations
 next to them) or with an independent formulation of seed 004 §19.6 (the joint point as
 p_{3i-1} moved towards p_{3i+1} by the knot fraction), never with course_lib's mathematics or
 the solution notebook's code.
 
 Per-student variants (issue 19): ``VARIANTS = True``, so the grader calls ``qN(student, data)``
-with the student's own data (``course_lib.variants.data("hw03", code)``: the default data
+with the student's own data (``course_lib.homework.variants.data("hw03", code)``: the default data
 without a course secret).  Every expected value is a generic formula of ``data``; the function
 questions q2, q7 and the symbolic q6 are the same for everyone.  :func:`answers_for` gives the
 worked answers of a variant (``tools/variant.py show``).
@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from course_lib import answers
+from course_lib.homework import answers
 
 HOMEWORK = "hw03"
 POINTS = {"q1": 2, "q2": 4, "q3": 3, "q4": 0, "q5": 2, "q6": 2, "q7": 2}  # multiple choice: feedback only

@@ -1,13 +1,13 @@
 """Hidden tests of homework 4 (run by tools/grade.py in the grader; never shipped to students).
 
 Form: see ``solutions/hidden_tests/README.md``.  Answers arrive as plain data and are
-normalized with ``course_lib.answers`` (the feedback checks' code).  Expected values are derived
+normalized with ``course_lib.homework.answers`` (the feedback checks' code).  Expected values are derived
 by hand (derivations next to them) or checked through the defining properties -- Bézier end
 derivatives (seed 000 eq. 8) put into the Beta-constraints (eq. 7) -- never with course_lib's
 mathematics or the solution notebook's code.
 
 Per-student variants (issue 19): ``VARIANTS = True``, so the grader calls ``qN(student, data)``
-with the student's own data (``course_lib.variants.data("hw04", code)``: the default data
+with the student's own data (``course_lib.homework.variants.data("hw04", code)``: the default data
 without a course secret).  Every expected value is a generic formula of ``data``; the function
 questions q2 and q4 are the same for everyone.  q6 (multiple choice) is feedback only: worth 0
 points, since its letter can be found by trying each one in ``check()``; its test still reports
@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from course_lib import answers
+from course_lib.homework import answers
 
 HOMEWORK = "hw04"
 POINTS = {"q1": 1, "q2": 4, "q3": 2, "q4": 3, "q5": 1, "q6": 0}

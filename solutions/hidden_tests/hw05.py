@@ -13,7 +13,7 @@ from course_lib's mathematics or the solution notebook:
   'D', DejaVu Serif 'o') than the feedback check.
 
 Per-student variants (issue 19): ``VARIANTS = True``, so the grader calls ``qN(student, data)``
-with the student's own data (``course_lib.variants.data("hw05", code)``: a b, d, p or q of one of
+with the student's own data (``course_lib.homework.variants.data("hw05", code)``: a b, d, p or q of one of
 four DejaVu Sans fonts, an implied point of its bowl, q4's options in the student's order).
 The data names the glyph (character, font file), the points of q3 and the order of q4's
 reasons; every expected value is computed here from the font file and those points.  The
@@ -32,7 +32,7 @@ from functools import cache
 
 import numpy as np
 
-from course_lib import answers
+from course_lib.homework import answers
 
 HOMEWORK = "hw05"
 #: q1, q3 and q6 are read off classify_joints, the tool this homework teaches: a library call

@@ -192,7 +192,7 @@ def bench_page(chromium_path, tmp_path_factory, request):
         server.save_log("latency-server.log")
 
 
-def _slider(demo):
+def make_slider(demo):
     for sel in SLIDERS:
         loc = demo.locator(f"{sel} .noUi-handle")
         if loc.count():
@@ -213,7 +213,7 @@ def test_input_to_canvas_latency(bench_page, artifacts):
         canvas.wait_for(state="visible", timeout=WAIT_MS)
         quiet(page, sel)
         # -- slider: arrow keys, alternating so the value stays in range
-        ssel, handle = _slider(demo)
+        ssel, handle = make_slider(demo)
         handle.focus()
         slider = []
         for i in range(N):

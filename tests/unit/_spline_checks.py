@@ -1,7 +1,7 @@
 """Shared checks for the spline-construction tests (not a test module).
 
 The Beta-constraints are typed in from seed 000 eq. (7.1)-(7.4) explicitly, independent
-of course_lib.beta_constraints; derivatives come from the Bézier control points
+of course_lib.geometry.beta_constraints; derivatives come from the Bézier control points
 (``PiecewiseBezier.end_derivatives``, seed 000 eq. (8.1)-(8.3) and their analogues).
 """
 
@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from course_lib.continuity import curve_continuity
+from course_lib.geometry.continuity import curve_continuity
 
 
 def explicit_beta_rhs(q: np.ndarray, b: list[float]) -> np.ndarray:
@@ -52,7 +52,7 @@ def joint_fails(curve, j: int, betas: list[float], rtol: float = 1e-6) -> bool:
 
 
 def assert_g_order(curve, order: int) -> None:
-    """course_lib.continuity reports exactly G^order (not more) at every joint."""
+    """course_lib.geometry.continuity reports exactly G^order (not more) at every joint."""
     reports = curve_continuity(curve, max_order=order + 1, rtol=1e-7)
     assert reports, "no joint to check"
     got = [r.g_order for r in reports]

@@ -9,19 +9,23 @@ import warnings
 import numpy as np
 import pytest
 
-from course_lib import bezier
-from course_lib.beta_constraints import beta_coefficients
-from course_lib.beta_splines import cubic_beta_spline, design_beta_spline, quadratic_beta_spline
-from course_lib.catmull_rom import catmull_rom
-from course_lib.curve import PiecewiseBezier
-from course_lib.differential_geometry import (
+from course_lib.constructions.beta_splines import (
+    beta_spline,
+    cubic_beta_spline,
+    design_beta_spline,
+    quadratic_beta_spline,
+)
+from course_lib.constructions.catmull_rom import catmull_rom
+from course_lib.constructions.stitching import farin_boehm, g1_stitch, g2_stitch
+from course_lib.curves import bezier
+from course_lib.curves.curve import PiecewiseBezier
+from course_lib.geometry.beta_constraints import beta_coefficients
+from course_lib.geometry.differential_geometry import (
     arc_length,
     curve_from_curvature,
     parameter_at_arc_length,
 )
-from course_lib.higher_order import beta_spline
-from course_lib.reparametrization import ChangeOfVariables, faa_di_bruno
-from course_lib.stitching import farin_boehm, g1_stitch, g2_stitch
+from course_lib.geometry.reparametrization import ChangeOfVariables, faa_di_bruno
 
 V = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0], [6.0, 1.0], [7.0, 3.0]])
 C = PiecewiseBezier([V[:4], V[3:]])

@@ -1,4 +1,4 @@
-"""Tests of course_lib.beta_constraints (seed 000 §5 eq. (7.1)-(7.4), seed 001 eq. (2.7)).
+"""Tests of course_lib.geometry.beta_constraints (seed 000 §5 eq. (7.1)-(7.4), seed 001 eq. (2.7)).
 
 Independent references: the printed equations of seed 000 (typed in here, in the
 test only, and compared with ``(a - b).expand() == 0``); a direct sympy
@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from course_lib.beta_constraints import (
+from course_lib.geometry.beta_constraints import (
     _raw_derivative,
     apply_beta_constraints,
     beta_coefficients,

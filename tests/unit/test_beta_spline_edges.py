@@ -20,8 +20,8 @@ from _spline_checks import check_joint
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from course_lib.beta_splines import cubic_beta_spline, design_beta_spline
-from course_lib.stitching import farin_boehm, g2_stitch_points
+from course_lib.constructions.beta_splines import cubic_beta_spline, design_beta_spline
+from course_lib.constructions.stitching import farin_boehm, g2_stitch_points
 
 u, B1, B2 = sp.symbols("u beta1 beta2")
 DELTA = 2 * B1**3 + 4 * B1**2 + 4 * B1 + B2 + 2
@@ -210,7 +210,7 @@ def test_design_at_gamma_infinite_says_why():
 
 @pytest.mark.parametrize("b1", [1e-300, 1e-100, 1e100, 1e300])
 def test_catmull_rom_extreme_beta1_is_finite_or_refused(b1):
-    from course_lib.catmull_rom import catmull_rom
+    from course_lib.constructions.catmull_rom import catmull_rom
 
     c = catmull_rom(V7, b1)
     assert np.all(np.isfinite(np.array(c.segments)))

@@ -1,9 +1,9 @@
-"""Tests of course_lib.beta_splines (seed 000 §10).
+"""Tests of course_lib.constructions.beta_splines (seed 000 §10).
 
 References: the Beta-constraints typed in from seed 000 eq. (7.1)-(7.2) at every joint
 with that joint's own, joint-varying shape parameters; scipy.interpolate.BSpline for
-the uniform quadratic/cubic B-spline (β1 = 1, β2 = 0); course_lib.continuity for
-"exactly G1/G2"; the linear-system construction of course_lib.higher_order
+the uniform quadratic/cubic B-spline (β1 = 1, β2 = 0); course_lib.geometry.continuity for
+"exactly G1/G2"; the linear-system construction of course_lib.constructions.beta_splines
 (independent of the geometric one) for global parameters.
 """
 
@@ -16,17 +16,19 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.interpolate import BSpline
 
-from course_lib.beta_splines import (
-    _cubic_points,
-    _cubic_polygons_from,
+from course_lib.constructions.beta_splines import (
     cubic_beta_spline,
     cubic_beta_spline_basis,
     design_beta_spline,
+    gn_beta_spline_basis,
     quadratic_beta_spline,
     quadratic_beta_spline_basis,
 )
-from course_lib.curve import PiecewiseBezier
-from course_lib.higher_order import gn_beta_spline_basis
+from course_lib.constructions.beta_splines.quadratic_cubic import (
+    _cubic_points,
+    _cubic_polygons_from,
+)
+from course_lib.curves.curve import PiecewiseBezier
 
 seeds = st.integers(0, 10**6)
 

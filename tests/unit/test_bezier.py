@@ -1,4 +1,4 @@
-"""Tests of course_lib.bezier against independent derivations.
+"""Tests of course_lib.curves.bezier against independent derivations.
 
 References used here: the Bernstein definition evaluated with exact rationals
 (fractions.Fraction), de Casteljau's algorithm (a different algorithm from the
@@ -16,7 +16,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from course_lib import bezier
+from course_lib.curves import bezier
 
 # Dyadic data keeps every intermediate value exact in binary floating point.
 V = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.5], [4.0, 0.5]])
@@ -145,10 +145,33 @@ def test_bad_input(call, exc, match):
 
 
 def test_hodographs_of_stacked_polygons_match_one_by_one():
-    from course_lib.bezier import _derivative_points
+    from course_lib.curves.bezier import derivative_points
 
     W = V[::-1] * 0.5 + 1.0
     stacked = np.stack([V, W])
     for k in range(5):
         expected = np.stack([bezier.derivative_control_points(P, k) for P in (V, W)])
-        np.testing.assert_array_equal(_derivative_points(stacked, k), expected)
+        np.testing.assert_array_equal(derivative_points(stacked, k), expected)
+
+
+@pytest.mark.parametrize("d", [1, 2, 3, 5])
+@pytest.mark.parametrize("end", [0, 1])
+def test_end_derivative_matrix_is_the_hodograph_at_the_end(d, end):
+    """The one end-derivative matrix against the k-th hodograph written out by hand
+    (k-th forward differences times d!/(d-k)!), exact on integer control points."""
+    from math import factorial
+
+    from course_lib.curves.bezier import end_derivative_matrix
+
+    rng = np.random.default_rng(d)
+    P = rng.integers(-9, 10, size=(d + 1, 2)).astype(float)
+    M = end_derivative_matrix(d, d + 1, end)
+    for k in range(d + 2):
+        if k > d:
+            expected = np.zeros(2)
+        else:
+            diffs = np.diff(P, n=k, axis=0) * (factorial(d) // factorial(d - k))
+            expected = diffs[-1] if end == 1 else diffs[0]
+        np.testing.assert_array_equal(M[k] @ P, expected)
+    with pytest.raises(ValueError, match="end must be 0"):
+        end_derivative_matrix(d, 1, 2)

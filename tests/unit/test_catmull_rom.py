@@ -1,8 +1,8 @@
-"""Tests of course_lib.catmull_rom (seed 000 §9, eq. (13)-(14)).
+"""Tests of course_lib.constructions.catmull_rom (seed 000 §9, eq. (13)-(14)).
 
 References: sympy on the transcribed eq. (14); the classical uniform Catmull-Rom
 matrix 0.5 [[0,2,0,0],[-1,0,1,0],[2,-5,4,-1],[-1,3,-3,1]] (monomial basis
-1, u, u^2, u^3); explicit Beta-constraint (7.1); course_lib.continuity.
+1, u, u^2, u^3); explicit Beta-constraint (7.1); course_lib.geometry.continuity.
 """
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ from _spline_checks import assert_g_order, check_joint
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from course_lib.catmull_rom import catmull_rom, catmull_rom_blending
+from course_lib.constructions.catmull_rom import catmull_rom, catmull_rom_blending
 
 CR = 0.5 * np.array([[0, 2, 0, 0], [-1, 0, 1, 0], [2, -5, 4, -1], [-1, 3, -3, 1]])
 

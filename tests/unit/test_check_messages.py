@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from course_lib import variants
-from course_lib.checks import check
+from course_lib.homework import variants
+from course_lib.homework.checks import check
 
 
 def _joint(d, knots):
@@ -49,7 +49,7 @@ def test_an_equation_is_named_as_such():
 
 
 def test_check_all_warns_when_variant_is_empty():
-    from course_lib.checks import check_all
+    from course_lib.homework.checks import check_all
 
     empty = check_all({"VARIANT": ""}, "hw01")
     assert any("VARIANT is empty" in n for n in empty.notes)

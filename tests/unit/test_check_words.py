@@ -3,7 +3,7 @@ as "cross mark" by a screen reader)."""
 
 from __future__ import annotations
 
-from course_lib.checks._core import FAIL, PASS, UNANSWERED, Verdict
+from course_lib.homework.checks._core import FAIL, PASS, UNANSWERED, Verdict
 
 
 def test_a_failed_check_says_so_in_words():

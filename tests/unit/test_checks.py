@@ -16,8 +16,8 @@ import sympy as sp
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from course_lib import checks
-from course_lib.checks import (
+from course_lib.homework import checks
+from course_lib.homework.checks import (
     Report,
     Verdict,
     _core,
@@ -433,7 +433,7 @@ def test_hw05_q5_phantom_vertices_keep_the_corners_and_their_tangents(points):
     # what hw05 q5 teaches, on run polygons of font-unit points: the cubic Beta-spline with
     # β1 = 1, β2 = 0 on 2V0 - V1, V0..Vn, 2Vn - Vn-1 is the span-by-span Bézier form written
     # by hand, starts at V0 along V1 - V0 with zero curvature, ends likewise, and is C2
-    from course_lib.beta_splines import cubic_beta_spline
+    from course_lib.constructions.beta_splines import cubic_beta_spline
 
     V = np.array(points, float)
     E = np.vstack([2 * V[0] - V[1], V, 2 * V[-1] - V[-2]])
@@ -454,7 +454,7 @@ def test_hw05_q5_phantom_vertices_keep_the_corners_and_their_tangents(points):
 def test_hw05_q2_the_cross_product_test_agrees_with_classify_joints(points, s, parallel):
     # the criterion of hw05 q2 (lecture 09 §2) against the outline classifier on a real
     # TrueType contour P0 (on), A, B (off), P2 (on): its first joint is the implied M
-    from course_lib.outlines import Outline, classify_joints, truetype_contour
+    from course_lib.constructions.outlines import Outline, classify_joints, truetype_contour
 
     P0, A, B, P2 = (np.array(p, float) for p in points)
     if parallel:
@@ -481,7 +481,7 @@ def test_hw03_q4_only_uniform_knots_put_every_joint_at_the_midpoint():
 # ---------------------------------------------------------------- lecture numeric checks
 def test_lecture_numeric_checks_pass_right_and_fail_wrong_answers():
     """The mechanism; every lecture answer is derived in tests/test_lecture_answers.py."""
-    from course_lib.checks.lectures import check_number
+    from course_lib.homework.checks.lectures import check_number
 
     right = np.hypot(4, 2)  # lecture02.q3 by hand: q~'(v) = 2 q'(2v) = (4, 2)
     assert check_number("lecture02.q3", right).passed

@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from course_lib.closeness import closeness
-from course_lib.parametrization import ParametricCurve
+from course_lib.curves.parametrization import ParametricCurve
+from course_lib.geometry.closeness import closeness
 
 t = sp.Symbol("t")
 TT = np.linspace(0, np.pi, 401)
@@ -46,7 +46,7 @@ def test_empty_parameters_raise():
 
 
 def test_rippled_circle_is_the_formula():
-    from course_lib.closeness import rippled_circle
+    from course_lib.geometry.closeness import rippled_circle
 
     c = rippled_circle(0.03, 40)
     tt = np.linspace(0, np.pi, 7)

@@ -1,9 +1,9 @@
-"""Tests of course_lib.continuity (seed 000 §3-6).
+"""Tests of course_lib.geometry.continuity (seed 000 §3-6).
 
 Joints are built by hand from Bézier end-derivative formulas (seed 000 eq. (8.2)-(8.3),
 and the cubic third derivative 6 (W3 - 3 W2 + 3 W1 - W0)) so that their continuity
 order is known exactly; curvature vectors are cross-checked with
-course_lib.differential_geometry on each side separately.  The three
+course_lib.geometry.differential_geometry on each side separately.  The three
 characterizations must agree, and the G-order must survive random
 orientation-preserving reparametrization (hypothesis).
 """
@@ -18,10 +18,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from course_lib import PiecewiseBezier
-from course_lib import differential_geometry as dg
-from course_lib.continuity import CHARACTERIZATIONS, curve_continuity, joint_continuity
-from course_lib.parametrization import ParametricCurve
-from course_lib.reparametrization import ChangeOfVariables, Reparametrized
+from course_lib.curves.parametrization import ParametricCurve
+from course_lib.geometry import differential_geometry as dg
+from course_lib.geometry.continuity import CHARACTERIZATIONS, curve_continuity, joint_continuity
+from course_lib.geometry.reparametrization import ChangeOfVariables, Reparametrized
 
 V = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.5], [4.0, 1.0]])
 
@@ -256,7 +256,7 @@ def test_knot_ratio_equal_to_beta1_gives_c1():
 
 
 def test_report_prints_rounding_noise_as_zero_but_keeps_real_values():
-    from course_lib.continuity import DISPLAY_ZERO, JointReport
+    from course_lib.geometry.continuity import DISPLAY_ZERO, JointReport
 
     rep = JointReport(
         index=0,

@@ -11,12 +11,12 @@ import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from course_lib._bell import bell_table
-from course_lib.beta_splines import cubic_beta_spline
-from course_lib.catmull_rom import catmull_rom
-from course_lib.continuity import curve_continuity, joint_continuity
-from course_lib.curve import PiecewiseBezier
-from course_lib.parametrization import ParametricCurve
+from course_lib.constructions.beta_splines import cubic_beta_spline
+from course_lib.constructions.catmull_rom import catmull_rom
+from course_lib.curves.curve import PiecewiseBezier
+from course_lib.curves.parametrization import ParametricCurve
+from course_lib.geometry.chain_rule import bell_table
+from course_lib.geometry.continuity import curve_continuity, joint_continuity
 
 BENCH = Path(__file__).resolve().parents[2] / "benchmarks"
 
@@ -101,7 +101,7 @@ def test_benchmark_item_7_runs_and_checks_first(monkeypatch):
 def test_characterizations_agree_near_the_threshold(beta1, which):
     """Sweep a G2 joint's curvature jump (or G1 joint's tangent kink) through the tolerance:
     the three characterizations agree, or the report says the joint is borderline."""
-    from course_lib.stitching import g2_stitch
+    from course_lib.constructions.stitching import g2_stitch
 
     V = np.array([[0.0, 0.0], [1.0, 1.5], [2.5, 1.8], [3.5, 1.0]])
     base = g2_stitch(V, beta1, 0.3, np.array([[3.5 + 4 * beta1, 2.0]]))

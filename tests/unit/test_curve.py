@@ -1,6 +1,6 @@
-"""Tests of the central curve type, course_lib.curve.PiecewiseBezier.
+"""Tests of the central curve type, course_lib.curves.curve.PiecewiseBezier.
 
-Independent references: per-segment Bézier evaluation (course_lib.bezier, tested
+Independent references: per-segment Bézier evaluation (course_lib.curves.bezier, tested
 separately against exact rationals), central finite differences for global
 derivatives, and the chain rule d/dt = (1/h) d/du written out by hand.
 """
@@ -12,7 +12,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from course_lib import PiecewiseBezier, bezier
+from course_lib import PiecewiseBezier
+from course_lib.curves import bezier
 
 SEG_A = np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 1.0], [3.0, 0.0]])
 SEG_B = np.array([[3.0, 0.0], [4.0, -1.0], [5.0, 0.5]])  # quadratic: mixed degrees
@@ -158,3 +159,15 @@ def test_bad_construction(args, kwargs, exc, match):
 def test_bad_calls(call, exc, match):
     with pytest.raises(exc, match=match):
         call(mixed())
+
+
+def test_segments_by_degree_groups_mixed_degrees_with_their_hodographs():
+    line, quad, cubic = ([[0, 0], [1, 0]], [[1, 0], [2, 1], [3, 0]], [[3, 0], [4, 1], [5, 1], [6, 0]])
+    c = PiecewiseBezier([quad, line, cubic, quad])
+    groups = {d: (idx.tolist(), rows.tolist(), pts) for d, idx, rows, pts in c.segments_by_degree(1)}
+    assert sorted(groups) == [1, 2, 3]
+    assert groups[2][0] == [0, 3] and groups[2][1] == [0, -1, -1, 1]
+    np.testing.assert_array_equal(groups[2][2][0], 2 * np.diff(np.array(quad, float), axis=0))
+    np.testing.assert_array_equal(groups[3][2][0], 3 * np.diff(np.array(cubic, float), axis=0))
+    assert c.uniform_array is None
+    assert PiecewiseBezier([quad, quad]).uniform_array.shape == (2, 3, 2)

@@ -1,4 +1,4 @@
-"""Tests of course_lib.differential_geometry (seed 004 §19.2-19.3).
+"""Tests of course_lib.geometry.differential_geometry (seed 004 §19.2-19.3).
 
 Independent references: closed forms (circle, parabola, helix, clothoid via
 scipy.special.fresnel), scipy.integrate.quad for arc length, central finite
@@ -12,8 +12,8 @@ import pytest
 from scipy import integrate, special
 
 from course_lib import PiecewiseBezier
-from course_lib import differential_geometry as dg
-from course_lib.parametrization import ParametricCurve
+from course_lib.curves.parametrization import ParametricCurve
+from course_lib.geometry import differential_geometry as dg
 
 
 def circle(R=2.0, center=(1.0, -1.0), orientation=1.0, domain=(0.0, 5.0)):
@@ -193,7 +193,7 @@ def test_fundamental_theorem_round_trip():
 
 
 def test_reparametrized_curve_accepted():
-    from course_lib.reparametrization import ChangeOfVariables, Reparametrized
+    from course_lib.geometry.reparametrization import ChangeOfVariables, Reparametrized
 
     f = ChangeOfVariables.polynomial([0.0, 0.5, 0.0, 0.5], (0.0, 1.0))  # f(x) = (x + x^3)/2
     rp = Reparametrized(PARABOLA, f)

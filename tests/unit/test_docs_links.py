@@ -21,17 +21,18 @@ def test_notebook_links_point_to_existing_notebooks(path):
 
 def test_every_construction_module_links_its_lesson():
     for name in (
-        "bezier",
-        "curve",
-        "differential_geometry",
-        "reparametrization",
-        "beta_constraints",
-        "continuity",
-        "stitching",
-        "catmull_rom",
-        "beta_splines",
-        "knot_splines",
-        "higher_order",
-        "surfaces",
+        "curves/bezier",
+        "curves/curve",
+        "geometry/differential_geometry",
+        "geometry/reparametrization",
+        "geometry/beta_constraints",
+        "geometry/continuity",
+        "constructions/stitching",
+        "constructions/catmull_rom",
+        "constructions/beta_splines/quadratic_cubic",
+        "constructions/knot_splines",
+        "constructions/beta_splines/degree_n",
+        "constructions/surfaces",
+        "constructions/outlines/__init__",
     ):
         assert "Lesson: ``notebooks/" in (ROOT / "course_lib" / f"{name}.py").read_text(), name

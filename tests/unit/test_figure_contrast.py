@@ -125,7 +125,7 @@ def test_the_check_finds_a_pale_line():
 
 
 def test_blending_function_plot_reaches_aa_contrast():
-    from course_lib.beta_splines import cubic_beta_spline
+    from course_lib.constructions.beta_splines import cubic_beta_spline
     from course_lib.plotting import new_figure, plot_blending_functions
 
     fig, ax = new_figure(pyplot=False)

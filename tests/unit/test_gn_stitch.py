@@ -10,8 +10,13 @@ from _spline_checks import check_joint
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from course_lib.continuity import curve_continuity
-from course_lib.stitching import g1_stitch_points, g2_stitch_points, gn_stitch, gn_stitch_points
+from course_lib.constructions.stitching import (
+    g1_stitch_points,
+    g2_stitch_points,
+    gn_stitch,
+    gn_stitch_points,
+)
+from course_lib.geometry.continuity import curve_continuity
 
 
 @settings(max_examples=20, deadline=None)

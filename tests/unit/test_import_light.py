@@ -7,18 +7,18 @@ import sys
 
 MODULES = [
     "course_lib",
-    "course_lib.parametrization",
-    "course_lib.differential_geometry",
-    "course_lib.reparametrization",
-    "course_lib.beta_constraints",
-    "course_lib.continuity",
+    "course_lib.curves.parametrization",
+    "course_lib.geometry.differential_geometry",
+    "course_lib.geometry.reparametrization",
+    "course_lib.geometry.beta_constraints",
+    "course_lib.geometry.continuity",
 ]
 HEAVY = ["sympy", "matplotlib", "ipywidgets", "scipy"]
 # The numeric paths must stay light at call time too (numeric Beta-constraints, reports).
 USE = """
 import numpy as np
 from course_lib import PiecewiseBezier
-from course_lib import beta_constraints as bc, continuity as co, differential_geometry as dg
+from course_lib.geometry import beta_constraints as bc, continuity as co, differential_geometry as dg
 c = PiecewiseBezier([np.array([[0, 0], [1, 1], [2, 0.]]), np.array([[2, 0], [3, -1], [4, 0.]])])
 bc.solve_shape_parameters(bc.apply_beta_constraints(np.eye(2), [2.0, 1.0]), np.eye(2))
 str(co.curve_continuity(c)[0])
@@ -37,30 +37,35 @@ def test_math_modules_import_light():
     assert out.stdout.strip() == "", f"heavy modules imported: {out.stdout.strip()}"
 
 
-# Every math submodule of the module map (CONTRIBUTING.md) that exists so far, each
-# imported in turn in one fresh interpreter; the first one that pulls in a heavy
-# package is named.  (Added with the benchmarks, issue "Benchmarks".)
-ALL_MATH = [
-    "bezier", "curve", "differential_geometry", "reparametrization", "beta_constraints",
-    "continuity", "stitching", "catmull_rom", "beta_splines", "knot_splines", "higher_order",
-    "surfaces",
-]
+# Every math module (the parts curves/, geometry/, constructions/, sources/ of the module map in
+# CONTRIBUTING.md, and validation), found on disk, each imported in turn in one fresh
+# interpreter; the first one that pulls in a heavy package is named.
+MATH_PARTS = ("curves", "geometry", "constructions", "sources")
 LIGHT_ONLY = ["sympy", "matplotlib", "ipywidgets"]
 
 
-def test_every_existing_math_submodule_imports_light():
+def math_modules() -> list[str]:
     from pathlib import Path
 
     package = Path(__file__).resolve().parents[2] / "course_lib"
-    present = [m for m in ALL_MATH if (package / f"{m}.py").exists()]
-    assert {"bezier", "curve"} <= set(present)
+    found = ["course_lib.validation"]
+    for part in MATH_PARTS:
+        for path in sorted((package / part).rglob("*.py")):
+            dotted = ".".join(path.relative_to(package.parent).with_suffix("").parts)
+            found.append(dotted.removesuffix(".__init__"))
+    return found
+
+
+def test_every_existing_math_submodule_imports_light():
+    present = math_modules()
+    assert {"course_lib.curves.bezier", "course_lib.curves.curve"} <= set(present)
     code = (
         "import sys\n"
         f"heavy = {LIGHT_ONLY!r}\n"
         "import course_lib\n"
         "culprits = []\n"
         f"for name in {present!r}:\n"
-        "    __import__('course_lib.' + name)\n"
+        "    __import__(name)\n"
         "    culprits += [(name, h) for h in heavy if h in sys.modules and\n"
         "                 all(h != c[1] for c in culprits)]\n"
         "print(culprits)\n"

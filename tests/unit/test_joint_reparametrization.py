@@ -8,7 +8,7 @@ import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from course_lib.joint_reparametrization import onto_change_of_variables, smoothstep
+from course_lib.geometry.joint_reparametrization import onto_change_of_variables, smoothstep
 
 
 @pytest.mark.parametrize("n", [1, 2, 3, 4])

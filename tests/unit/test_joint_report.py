@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from course_lib import PiecewiseBezier
-from course_lib.continuity import curve_continuity, joint_report
+from course_lib.geometry.continuity import curve_continuity, joint_report
 
 
 def _curve() -> PiecewiseBezier:

@@ -1,8 +1,8 @@
-"""Tests of course_lib.knot_splines (seed 004 §19.5-19.7).
+"""Tests of course_lib.constructions.knot_splines (seed 004 §19.5-19.7).
 
 References: the midpoint rule of the C1 Bézier spline (uniform knots); the chain rule
 in the global parameter (C1, seed 004 exercise 3) checked on the global derivatives
-and by course_lib.continuity; the explicit Beta-constraint (7.1) with β1 from the knot
+and by course_lib.geometry.continuity; the explicit Beta-constraint (7.1) with β1 from the knot
 ratio; the barycentric identity of seed 004 §19.6 checked on the numbers t_i.
 """
 
@@ -14,8 +14,12 @@ from _spline_checks import check_joint
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from course_lib.continuity import curve_continuity
-from course_lib.knot_splines import bezier_points_from_g1, g1_knot_spline, knot_ratio_beta1
+from course_lib.constructions.knot_splines import (
+    bezier_points_from_g1,
+    g1_knot_spline,
+    knot_ratio_beta1,
+)
+from course_lib.geometry.continuity import curve_continuity
 
 
 def _knots(rng, L):

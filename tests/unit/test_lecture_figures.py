@@ -9,11 +9,14 @@ matplotlib.use("Agg")
 import numpy as np
 import pytest
 
-from course_lib.beta_splines import cubic_beta_spline, quadratic_beta_spline
-from course_lib.catmull_rom import catmull_rom
-from course_lib.closeness import rippled_circle
-from course_lib.differential_geometry import curve_from_curvature
-from course_lib.higher_order import quartic_beta_spline
+from course_lib.constructions.beta_splines import (
+    cubic_beta_spline,
+    quadratic_beta_spline,
+    quartic_beta_spline,
+)
+from course_lib.constructions.catmull_rom import catmull_rom
+from course_lib.geometry.closeness import rippled_circle
+from course_lib.geometry.differential_geometry import curve_from_curvature
 from course_lib.plotting import lecture_figures as lf
 
 P = np.array([[0, 0], [0.5, 2.5], [2.5, 3.2], [4, 0.8], [6, 0.4], [7.5, 2.8], [9.5, 3.0],

@@ -10,18 +10,19 @@ import numpy as np
 import pytest
 from scipy.interpolate import BSpline
 
-from course_lib._bell import MAX_CHAIN_RULE_ORDER
-from course_lib.beta_constraints import (
+from course_lib.constructions.beta_splines import beta_spline, gn_beta_spline_basis
+from course_lib.constructions.beta_splines.degree_n import MAX_BASIS_ORDER
+from course_lib.curves.curve import PiecewiseBezier
+from course_lib.geometry.beta_constraints import (
     MAX_SYMBOLIC_ORDER,
     apply_beta_constraints,
     beta_constraints,
     solve_shape_parameters,
 )
-from course_lib.continuity import joint_continuity
-from course_lib.curve import PiecewiseBezier
-from course_lib.differential_geometry import arc_length_derivatives
-from course_lib.higher_order import MAX_BASIS_ORDER, beta_spline, gn_beta_spline_basis
-from course_lib.reparametrization import ChangeOfVariables, Reparametrized, faa_di_bruno
+from course_lib.geometry.chain_rule import MAX_CHAIN_RULE_ORDER
+from course_lib.geometry.continuity import joint_continuity
+from course_lib.geometry.differential_geometry import arc_length_derivatives
+from course_lib.geometry.reparametrization import ChangeOfVariables, Reparametrized, faa_di_bruno
 
 V = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]])
 C = PiecewiseBezier([V, V + np.array([4.0, 0.0])])

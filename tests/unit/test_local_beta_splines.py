@@ -13,8 +13,8 @@ from _spline_checks import check_joint
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from course_lib.continuity import curve_continuity
-from course_lib.higher_order import beta_spline, quartic_beta_spline
+from course_lib.constructions.beta_splines import beta_spline, quartic_beta_spline
+from course_lib.geometry.continuity import curve_continuity
 
 
 def _joint_betas(rng, joints, n):

@@ -1,4 +1,4 @@
-"""Tests of course_lib.outlines: glyphs and SVG path data read into PiecewiseBezier contours.
+"""Tests of course_lib.constructions.outlines: glyphs and SVG path data read into PiecewiseBezier contours.
 
 Independent references: fontTools' own pens (its decomposition of TrueType quadratic
 runs and of composite glyphs, its exact bounding boxes), matplotlib's SVG path writer,
@@ -16,8 +16,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from course_lib import PiecewiseBezier
-from course_lib.continuity import curve_continuity, joint_continuity
-from course_lib.outlines import (
+from course_lib.constructions.outlines import (
     KINDS,
     Outline,
     bundled_fonts,
@@ -31,6 +30,7 @@ from course_lib.outlines import (
     truetype_contour,
     truetype_outline,
 )
+from course_lib.geometry.continuity import curve_continuity, joint_continuity
 
 FONTS = ("DejaVuSans", "DejaVuSerif", "DejaVuSansMono", "STIXGeneral", "cmr10")
 EM_TOL = 1e-12
@@ -80,9 +80,9 @@ def _pen_segments(font: str, name: str) -> list[list[np.ndarray]]:
             if np.any(self.cur != self.start):
                 self._add(self.start)
 
-    from course_lib.outlines import _load_font, _resolve_font
+    from course_lib.constructions.outlines.fonts import load_font, resolve_font
 
-    tt = _load_font(str(_resolve_font(font)))[0]
+    tt = load_font(str(resolve_font(font)))[0]
     gs = tt.getGlyphSet()
     pen = Collect(gs)
     gs[name].draw(pen)
@@ -110,9 +110,9 @@ def test_on_and_off_curve_points_agree_with_fonttools_recording_pen(font, name):
     control points, and its on-curve points our non-implied joints, in order."""
     from fontTools.pens.recordingPen import DecomposingRecordingPen
 
-    from course_lib.outlines import _load_font, _resolve_font
+    from course_lib.constructions.outlines.fonts import load_font, resolve_font
 
-    gs = _load_font(str(_resolve_font(font)))[0].getGlyphSet()
+    gs = load_font(str(resolve_font(font)))[0].getGlyphSet()
     pen = DecomposingRecordingPen(gs)
     gs[name].draw(pen)
     off, on, contours = [], [], []
@@ -148,9 +148,9 @@ def _open(P: np.ndarray) -> np.ndarray:
 
 
 def _upem(font: str) -> float:
-    from course_lib.outlines import _load_font, _resolve_font
+    from course_lib.constructions.outlines.fonts import load_font, resolve_font
 
-    return _load_font(str(_resolve_font(font)))[3]
+    return load_font(str(resolve_font(font)))[3]
 
 
 def _exact_bounds(outline: Outline) -> np.ndarray:
@@ -176,9 +176,9 @@ def _exact_bounds(outline: Outline) -> np.ndarray:
 def test_bounding_boxes_agree_with_fonttools_bounds_pen(font, name):
     from fontTools.pens.boundsPen import BoundsPen
 
-    from course_lib.outlines import _load_font, _resolve_font
+    from course_lib.constructions.outlines.fonts import load_font, resolve_font
 
-    tt = _load_font(str(_resolve_font(font)))[0]
+    tt = load_font(str(resolve_font(font)))[0]
     gs = tt.getGlyphSet()
     pen = BoundsPen(gs)
     gs[name].draw(pen)

@@ -1,4 +1,4 @@
-"""Tests of course_lib.parametrization.ParametricCurve.
+"""Tests of course_lib.curves.parametrization.ParametricCurve.
 
 References: closed-form derivatives of cos/sin and of polynomials, written by hand.
 """
@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from course_lib import PiecewiseBezier
-from course_lib.parametrization import ParametricCurve, as_parametrization
+from course_lib.curves.parametrization import ParametricCurve, as_parametrization
 
 
 def test_from_sympy_derivatives_of_any_order():

@@ -400,7 +400,7 @@ def test_plot_functions_return_artists_on_their_axes(ax):
 
 # ------------------------------------------- with the course's constructions
 def test_beta_spline_blending_functions_partition_of_unity_and_local_support(ax):
-    from course_lib.beta_splines import cubic_beta_spline
+    from course_lib.constructions.beta_splines import cubic_beta_spline
 
     n = 8
 
@@ -419,8 +419,8 @@ def test_beta_spline_blending_functions_partition_of_unity_and_local_support(ax)
 
 
 def test_stitching_diagram_from_a_g2_stitched_curve(ax):
+    from course_lib.constructions.stitching import g2_stitch
     from course_lib.plotting.constructions import plot_stitching
-    from course_lib.stitching import g2_stitch
 
     c = g2_stitch(V, 1.3, 2.0, [[9.0, 1.0]])
     g, T, _W = farin_boehm_by_hand(V, 1.3, 2.0)  # eq. (12) written out above
@@ -430,8 +430,8 @@ def test_stitching_diagram_from_a_g2_stitched_curve(ax):
 
 
 def test_patch_pair_normals_along_the_boundary():
+    from course_lib.constructions.surfaces import BezierPatch
     from course_lib.plotting.surfaces3d import plot_patch_pair
-    from course_lib.surfaces import BezierPatch
 
     # two bilinear-by-cubic patches forming a flat plane z = 0 (G1 trivially): normals (0,0,1)
     x = np.linspace(0, 1, 4)
@@ -455,8 +455,8 @@ def test_patch_pair_zoom_fills_a_laptop_sized_figure():
     file browser open on a 1366 px laptop); zoom trims the empty margin of each 3D box."""
     from io import BytesIO
 
+    from course_lib.constructions.surfaces import BezierPatch
     from course_lib.plotting.surfaces3d import plot_patch_pair
-    from course_lib.surfaces import BezierPatch
 
     x = np.linspace(0, 1, 4)
     F = BezierPatch(np.array([[[a, b, a * (1 - a) * b] for b in x] for a in x]))
@@ -592,9 +592,9 @@ def test_cached_bernstein_samples_agree_with_the_math_layer():
     """Points, T and K on the segment grid (one matrix product per order) against
     differential_geometry, evaluated independently: inside the segments through the
     global parameter, at the segment ends through each segment on its own."""
-    from course_lib import differential_geometry as dg
+    from course_lib.geometry import differential_geometry as dg
+    from course_lib.geometry.sampling import segment_derivatives, segment_grid
     from course_lib.plotting.curvature import _frame_samples
-    from course_lib.sampling import segment_derivatives, segment_grid
 
     n = 9
     P, T, K = _frame_samples(KNOTTED, n)
@@ -619,7 +619,7 @@ def test_cached_bernstein_samples_agree_with_the_math_layer():
 
 
 def test_fast_arc_lengths_against_scipy_quadrature():
-    from course_lib.sampling import segment_arc_lengths
+    from course_lib.geometry.arc_length import segment_arc_lengths
 
     n, idx = 16, np.array([0, 3, 6, 9, 12, 15])
     S = segment_arc_lengths(KNOTTED, n, idx)
@@ -647,8 +647,8 @@ def test_fast_frame_rejects_an_irregular_point(ax):
 
 
 def test_surface_figures_draw_the_domain_and_the_parameter_lines():
+    from course_lib.constructions.surfaces import BezierPatch
     from course_lib.plotting.surface_figures import plot_domain_and_patch, plot_parameter_lines
-    from course_lib.surfaces import BezierPatch
 
     x = np.linspace(0, 3, 4)
     F = BezierPatch(np.array([[[a, b, 0.2 * a * b] for b in x] for a in x]))
@@ -688,8 +688,8 @@ def test_beta_spline_construction_interior_only_and_labels_outside(ax):
 
 
 def test_reparametrization_figure_draws_parallel_velocities_side_by_side():
+    from course_lib.geometry.reparametrization import ChangeOfVariables
     from course_lib.plotting.reparametrization_figure import plot_reparametrization
-    from course_lib.reparametrization import ChangeOfVariables
 
     Q = PiecewiseBezier([[[0, 0], [1, 2.2], [3.2, 2.4], [4, 0.4]]])
     f = ChangeOfVariables.polynomial([0, 1.6, -0.6], (0, 1), (0, 1))  # v + 0.6 v (1 - v)

@@ -1,4 +1,4 @@
-"""Tests of course_lib.reparametrization (seed 000 §4, seed 001 §2).
+"""Tests of course_lib.geometry.reparametrization (seed 000 §4, seed 001 §2).
 
 Independent references: sympy differentiation of explicit compositions (Faà di
 Bruno, orders 1..6), the closed forms of seed 000 Examples 1-2, and invariance
@@ -13,9 +13,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from course_lib import PiecewiseBezier
-from course_lib import differential_geometry as dg
-from course_lib.parametrization import ParametricCurve
-from course_lib.reparametrization import (
+from course_lib.curves.parametrization import ParametricCurve
+from course_lib.geometry import differential_geometry as dg
+from course_lib.geometry.reparametrization import (
     ChangeOfVariables,
     Reparametrized,
     are_equivalent,

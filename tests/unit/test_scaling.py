@@ -9,10 +9,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from course_lib.beta_splines import cubic_beta_spline, design_beta_spline
-from course_lib.continuity import curve_continuity
-from course_lib.curve import PiecewiseBezier
-from course_lib.differential_geometry import (
+from course_lib.constructions.beta_splines import cubic_beta_spline, design_beta_spline
+from course_lib.curves.curve import PiecewiseBezier
+from course_lib.geometry.continuity import curve_continuity
+from course_lib.geometry.differential_geometry import (
     arc_length,
     cumulative_arc_length,
     parameter_at_arc_length,

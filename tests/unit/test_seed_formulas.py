@@ -1,4 +1,4 @@
-"""Tests of course_lib.seed_formulas: the printed forms fail where the lectures say, the
+"""Tests of course_lib.sources.seed_formulas: the printed forms fail where the lectures say, the
 corrected forms hold, each against an independent derivation."""
 
 from __future__ import annotations
@@ -9,10 +9,13 @@ import sympy as sp
 from hypothesis import given
 from hypothesis import strategies as st
 
-from course_lib import seed_formulas as sf
-from course_lib.beta_splines import cubic_beta_spline
-from course_lib.continuity import curve_continuity
-from course_lib.higher_order import beta_spline, gn_beta_spline_basis
+from course_lib.constructions.beta_splines import (
+    beta_spline,
+    cubic_beta_spline,
+    gn_beta_spline_basis,
+)
+from course_lib.geometry.continuity import curve_continuity
+from course_lib.sources import seed_formulas as sf
 
 P = np.array(
     [[0, 0], [0.5, 2.5], [2.5, 3.2], [4, 0.8], [6, 0.4], [7.5, 2.8], [9.5, 3.0], [10.5, 0.8]]

@@ -7,9 +7,9 @@ from __future__ import annotations
 import numpy as np
 from _spline_checks import check_joint
 
-from course_lib import bezier
-from course_lib.continuity import curve_continuity
-from course_lib.stitching import g1_stitch, g1_stitch_points
+from course_lib.constructions.stitching import g1_stitch, g1_stitch_points
+from course_lib.curves import bezier
+from course_lib.geometry.continuity import curve_continuity
 
 P0 = np.array([[1.5, -2.0]])
 

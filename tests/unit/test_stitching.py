@@ -1,8 +1,8 @@
-"""Tests of course_lib.stitching (seed 000 §8, eq. (9)-(12)).
+"""Tests of course_lib.constructions.stitching (seed 000 §8, eq. (9)-(12)).
 
 References: the Beta-constraints typed in from seed 000 eq. (7.1)-(7.2) applied to
 Bézier end derivatives; a sympy expansion of eq. (12.1)-(12.5) against eq. (11b);
-course_lib.continuity for "exactly G1 / G2".
+course_lib.geometry.continuity for "exactly G1 / G2".
 """
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ from _spline_checks import assert_g_order, check_joint
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from course_lib.stitching import (
+from course_lib.constructions.stitching import (
     farin_boehm,
     farin_boehm_gamma,
     g1_stitch,

@@ -1,4 +1,4 @@
-"""Tests of course_lib.surfaces (seed 001 §3).
+"""Tests of course_lib.constructions.surfaces (seed 001 §3).
 
 References: finite differences and a closed-form bilinear/biquadratic patch for the
 partials; the cross-product definition of the normal; the explicit first-order
@@ -14,7 +14,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from course_lib.surfaces import (
+from course_lib.constructions.surfaces import (
     BezierPatch,
     count_shape_functions,
     g1_neighbour_patch,

@@ -5,7 +5,7 @@ Real ``d`` attributes as they are written -- matplotlib's toolbar icons, Jupyter
 of the course's environment, and Debian's Adwaita and Tango icon themes (``adwaita-icon-theme``,
 ``tango-icon-theme``, installed by ``tools/ensure-test-data`` under ``make test``; the
 tests that need them skip with a reason where they are absent, and fail in CI) -- are read by
-:func:`course_lib.outlines.svg_outline` and by ``svgelements.Path``, and must agree:
+:func:`course_lib.constructions.outlines.svg_outline` and by ``svgelements.Path``, and must agree:
 
 * none is refused (they are valid SVG; Inkscape's trailing ``z m 0 0`` draws nothing);
 * the same shapes: subpath by subpath, segment by segment, the same control points (arcs:
@@ -29,7 +29,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from course_lib.outlines import classify_joints, svg_outline
+from course_lib.constructions.outlines import classify_joints, svg_outline
 
 se = pytest.importorskip(
     "svgelements", reason="the independent SVG parser of the tests: pip install -e '.[test]'"

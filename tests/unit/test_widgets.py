@@ -223,7 +223,7 @@ def test_beta_demo_css_and_slider_ranges(beta):
 
 
 def test_beta1_slider_reaches_the_curve_and_the_report(beta):
-    from course_lib.beta_splines import cubic_beta_spline
+    from course_lib.constructions.beta_splines import cubic_beta_spline
 
     beta.controls["same"].value = True
     beta.controls["beta1"].value = 2.0
@@ -460,8 +460,8 @@ def test_moving_t_does_not_recompute_the_curve_pictures(monkeypatch):
     assert sorted(calls) == ["curve_artists", "profile"]
     st.set_flag("show_comb", True)  # shown again: recomputed for the new curve
     teeth = view.comb.tooth_array()
-    from course_lib.differential_geometry import curvature_vector
-    from course_lib.sampling import segment_grid
+    from course_lib.geometry.differential_geometry import curvature_vector
+    from course_lib.geometry.sampling import segment_grid
 
     t = segment_grid(st.curve, view.comb.per_segment).ravel()
     K = curvature_vector(st.curve, t[1:-1])  # interior samples (joints are one-sided)
@@ -707,8 +707,8 @@ def test_report_shows_the_demos_order_and_details_on_request():
 
 
 def test_rotating_the_3d_pair_uses_coarse_surfaces_until_release():
+    from course_lib.constructions.surfaces import BezierPatch, g1_neighbour_patch
     from course_lib.plotting.surfaces3d import plot_patch_pair
-    from course_lib.surfaces import BezierPatch, g1_neighbour_patch
 
     xy = np.stack(np.meshgrid(np.arange(4.0), np.arange(4.0), indexing="ij"), axis=-1)
     hill = [[0, 0.5, 0.5, 0], [0.3, 1.6, 1.3, 0.2], [0.2, 1.3, 1.8, 0.4], [0, 0.4, 0.7, 0.2]]

@@ -30,7 +30,7 @@ from pathlib import Path, PurePosixPath
 
 import nbformat
 
-from course_lib.submit import manifest_of
+from course_lib.homework.submit import manifest_of
 
 from . import intake
 
@@ -81,7 +81,7 @@ class Found:
     lms_late: bool | None = None  # the LMS's own late mark (Canvas), None if it has none
     lms_time: datetime | None = None  # the LMS's record of the submission time (Moodle's worksheet)
     names: list[str] = field(default_factory=list)  # ids the file/folder name gives
-    manifest: dict | None = None  # course_lib.submit.manifest_of, or None
+    manifest: dict | None = None  # course_lib.homework.submit.manifest_of, or None
     mtime: datetime | None = None
     variant_used: str | None = None  # the VARIANT written in the notebook (None: none found)
     data: bytes | None = None  # the bytes read once, without following links (what is graded)

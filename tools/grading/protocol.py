@@ -24,7 +24,7 @@ clamped fraction and a note; it never raises for anything the student did.
 The transport is a function ``request dict -> response text``: :class:`LocalStudent` answers
 in-process from a namespace (the feedback checks' equivalence tests use it), the grader's
 kernel transport answers from a sandboxed kernel.  Both go through the same JSON encoding of
-``course_lib._probe``, so a value reaches a hidden test in exactly the same form either way.
+``course_lib.homework.protocol``, so a value reaches a hidden test in exactly the same form either way.
 """
 
 from __future__ import annotations
@@ -37,7 +37,7 @@ from typing import Any
 
 import numpy as np
 
-from course_lib import _probe
+from course_lib.homework import protocol as _probe
 
 MAX_RESPONSE_BYTES = 4_000_000
 MAX_DEPTH = 10
@@ -94,13 +94,13 @@ def raised_note(message: str) -> str:
 
 
 def exercise_note(response: dict) -> str:
-    """The note for a response of kind ``exercise`` (:class:`course_lib.own_work.ExerciseError`).
+    """The note for a response of kind ``exercise`` (:class:`course_lib.homework.own_work.ExerciseError`).
 
-    The sentence is written here, by :mod:`course_lib.own_work`, from the response's
+    The sentence is written here, by :mod:`course_lib.homework.own_work`, from the response's
     ``question`` and ``implementation`` -- only when that implementation really is that
     question's exercise in the registry; the response's text is never shown.
     """
-    from course_lib import own_work  # the registry the fields must name
+    from course_lib.homework import own_work  # the registry the fields must name
 
     question, implementation = response.get("question"), response.get("implementation")
     if isinstance(question, str) and isinstance(implementation, str):
@@ -119,7 +119,7 @@ class StudentRaised(AssertionError):
     """The student's function raised an exception (its message is the note).
 
     An ``AssertionError`` so that a hidden test scoring case by case
-    (``course_lib.answers.partial_credit``) charges it to that case only.
+    (``course_lib.homework.answers.partial_credit``) charges it to that case only.
     """
 
     def __init__(self, note: str = "", *, exercise: bool = False) -> None:
@@ -149,7 +149,7 @@ class ChannelBroken(Exception):
 
 
 def decode_value(obj: Any, depth: int = 0, student: Student | None = None) -> Any:
-    """Validate and decode one encoded value (``course_lib._probe.decode``, strict)."""
+    """Validate and decode one encoded value (``course_lib.homework.protocol.decode``, strict)."""
     try:
         return _probe.decode(obj, depth)
     except _probe.Malformed as exc:
@@ -313,7 +313,7 @@ class LocalStudent(Student):
     """
 
     def __init__(self, namespace: dict) -> None:
-        from course_lib import _probe
+        from course_lib.homework import protocol as _probe
 
         def transport(request: dict) -> str:
             response = _probe.handle(json.loads(json.dumps(request)), namespace)

@@ -3,7 +3,7 @@
 The mechanics behind ``tools/grade.py`` (see its docstring for the trust boundary): a
 :class:`_Session` runs the student's code cells in a fresh sandboxed kernel (restarting without a
 cell that hangs, floods output or kills the kernel), and answers the hidden tests' requests
-through ``course_lib._probe``; :func:`grade_notebook` runs every question of a
+through ``course_lib.homework.protocol``; :func:`grade_notebook` runs every question of a
 :class:`HiddenTests` file in this process with :func:`protocol.run_question`.
 """
 
@@ -26,8 +26,8 @@ from pathlib import Path
 
 import nbformat
 
-from course_lib import own_work
-from course_lib.submit import describe_cell, error_text, manifest_of
+from course_lib.homework import own_work
+from course_lib.homework.submit import describe_cell, error_text, manifest_of
 
 from . import jobroot, protocol, sandbox, tamper
 
@@ -541,7 +541,7 @@ class _Session:
             # an unguessable name: code the student left running cannot plant a response
             response = self.responses / f".response-{secrets.token_hex(12)}.json"
             source = (
-                "__import__('course_lib._probe', fromlist=['serve']).serve("
+                "__import__('course_lib.homework.protocol', fromlist=['serve']).serve("
                 f"{json.dumps(request)!r}, globals(), {str(response)!r})"
             )
             left = question_deadline - time.monotonic()
@@ -809,7 +809,7 @@ def grade_notebook(
     _note_manifest(nb, tests.homework, result)
     variant_data = None
     if tests.variants:
-        from course_lib import variants
+        from course_lib.homework import variants
 
         variant_data = variants.data(tests.homework, variant)
         result.variant = variant
@@ -833,7 +833,7 @@ def grade_notebook(
                 continue
             transport = session.transport(question_timeout)
             test = tests.functions[q]
-            if tests.variants:  # graded on the student's own data (course_lib.variants)
+            if tests.variants:  # graded on the student's own data (course_lib.homework.variants)
                 test = functools.partial(test, data=variant_data)
             fraction, note = protocol.run_question(test, protocol.Student(transport))
             result.points[q] = round(fraction * tests.points[q], 2)

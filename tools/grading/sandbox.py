@@ -37,7 +37,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 
 import course_lib
-from course_lib import own_work
+from course_lib.homework import own_work
 
 LAUNCHER = Path(__file__).with_name("launch.py")
 GIB = 1 << 30

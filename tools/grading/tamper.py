@@ -5,7 +5,7 @@ README "The rule"), so what Python cannot prevent is made visible: before gradin
 submitted notebook's code cells are read as syntax trees (IPython syntax -- ``!cmd``,
 ``%magic`` -- translated first, as the kernel translates it) and searched for
 
-* the guard machinery: any use of ``course_lib.own_work`` or ``course_lib._probe`` (by import,
+* the guard machinery: any use of ``course_lib.homework.own_work`` or ``course_lib.homework.protocol`` (by import,
   alias, ``sys.modules``, ``importlib``, ``getattr``), its guard state (``_ACTIVE``, a frame's
   ``guarded``), a function's ``__code__``/``__globals__``/``__closure__``;
 * frames, the garbage collector, ``ctypes``, tracers, ``sys.modules`` and ``__import__``
@@ -33,7 +33,7 @@ import ast
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-from course_lib import own_work
+from course_lib.homework import own_work
 
 from . import identity
 
@@ -121,7 +121,7 @@ def _const_str(node: ast.AST | None) -> str | None:
 
 
 def _const_name(node: ast.AST | None) -> str | None:
-    """A constant dotted name (``"course_lib.own_work"``); None for anything else, so no
+    """A constant dotted name (``"course_lib.homework.own_work"``); None for anything else, so no
     student text but identifiers reaches a reason."""
     text = _const_str(node)
     if text and len(text) <= 200 and all(part.isidentifier() for part in text.split(".")):

@@ -47,8 +47,8 @@ import sympy as sp
 from numpy.polynomial import polynomial as P
 from scipy.integrate import quad
 
-from course_lib import variants
-from course_lib.checks import check, check_all
+from course_lib.homework import variants
+from course_lib.homework.checks import check, check_all
 
 HOMEWORK = "hw01"
 VARIANT = ""  # paste the code your instructor gave you, e.g. VARIANT = "KQW7MZP3XS"
@@ -89,9 +89,9 @@ check("hw01.q1", answer_q1)
 # It must work in the plane and in space.
 #
 # **You may use:** numpy (and plain Python); no function of `course_lib`.
-# `course_lib.reparametrization.faa_di_bruno`, `course_lib._bell.compose_derivatives`,
-# `course_lib.beta_constraints.apply_beta_constraints`,
-# `course_lib.beta_constraints.beta_coefficients` do it for you, so they raise while your
+# `course_lib.geometry.reparametrization.faa_di_bruno`, `course_lib.geometry.chain_rule.compose_derivatives`,
+# `course_lib.geometry.beta_constraints.apply_beta_constraints`,
+# `course_lib.geometry.beta_constraints.beta_coefficients` do it for you, so they raise while your
 # function is checked or graded.
 
 # %%
@@ -261,7 +261,7 @@ report
 # gave you with your variant code (your id on the course roster, e.g. your student number / SIS id):
 #
 # * in a terminal, from the course folder: `make submit HW=hw01 STUDENT=your-id`
-# * in a new cell here: `from course_lib.submit import submit; submit("hw01_reparametrization.ipynb", student="your-id")`
+# * in a new cell here: `from course_lib.homework.submit import submit; submit("hw01_reparametrization.ipynb", student="your-id")`
 #
 # Either runs the notebook top to bottom in a fresh kernel, as the grader will, lists the cells that
 # fail, and writes `submissions/hw01-your-id.ipynb`. Upload that file. The checks above are feedback;

@@ -45,8 +45,9 @@ import matplotlib.pyplot as plt
 import numpy as np
 import sympy as sp
 
-from course_lib import PiecewiseBezier, variants
-from course_lib.checks import check, check_all
+from course_lib import PiecewiseBezier
+from course_lib.homework import variants
+from course_lib.homework.checks import check, check_all
 from course_lib.plotting import segment_color
 
 HOMEWORK = "hw02"
@@ -108,8 +109,8 @@ check("hw02.q2", answer_q2)
 # return `False`.
 #
 # **You may use:** numpy (and plain Python); no function of `course_lib`.
-# `course_lib.beta_constraints.solve_shape_parameters`,
-# `course_lib.continuity.joint_continuity`, `course_lib.continuity.curve_continuity` do it for
+# `course_lib.geometry.beta_constraints.solve_shape_parameters`,
+# `course_lib.geometry.continuity.joint_continuity`, `course_lib.geometry.continuity.curve_continuity` do it for
 # you, so they raise while your function is checked or graded.
 
 # %%
@@ -271,7 +272,7 @@ report
 # gave you with your variant code (your id on the course roster, e.g. your student number / SIS id):
 #
 # * in a terminal, from the course folder: `make submit HW=hw02 STUDENT=your-id`
-# * in a new cell here: `from course_lib.submit import submit; submit("hw02_beta_constraints.ipynb", student="your-id")`
+# * in a new cell here: `from course_lib.homework.submit import submit; submit("hw02_beta_constraints.ipynb", student="your-id")`
 #
 # Either runs the notebook top to bottom in a fresh kernel, as the grader will, lists the cells that
 # fail, and writes `submissions/hw02-your-id.ipynb`. Upload that file. The checks above are feedback;

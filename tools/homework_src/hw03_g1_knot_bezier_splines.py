@@ -47,8 +47,9 @@ import matplotlib.pyplot as plt
 import numpy as np
 import sympy as sp
 
-from course_lib import PiecewiseBezier, variants
-from course_lib.checks import check, check_all
+from course_lib import PiecewiseBezier
+from course_lib.homework import variants
+from course_lib.homework.checks import check, check_all
 from course_lib.plotting import new_figure
 
 HOMEWORK = "hw03"
@@ -87,7 +88,7 @@ check("hw03.q1", answer_q1)
 # `(3L + 1, dim)`. It must work for any $L \ge 1$ and in space too.
 #
 # **You may use:** numpy (and plain Python); no function of `course_lib`.
-# `course_lib.knot_splines.bezier_points_from_g1`, `course_lib.knot_splines.g1_knot_spline` do
+# `course_lib.constructions.knot_splines.bezier_points_from_g1`, `course_lib.constructions.knot_splines.g1_knot_spline` do
 # it for you, so they raise while your function is checked or graded.
 
 # %%
@@ -227,7 +228,7 @@ check("hw03.q6", answer_q6)
 # numpy array.
 #
 # **You may use:** numpy (and plain Python); no function of `course_lib`.
-# `course_lib.knot_splines.knot_ratio_beta1` does it for you, so it raises while your function
+# `course_lib.constructions.knot_splines.knot_ratio_beta1` does it for you, so it raises while your function
 # is checked or graded.
 
 # %%
@@ -261,7 +262,7 @@ report
 # gave you with your variant code (your id on the course roster, e.g. your student number / SIS id):
 #
 # * in a terminal, from the course folder: `make submit HW=hw03 STUDENT=your-id`
-# * in a new cell here: `from course_lib.submit import submit; submit("hw03_g1_knot_bezier_splines.ipynb", student="your-id")`
+# * in a new cell here: `from course_lib.homework.submit import submit; submit("hw03_g1_knot_bezier_splines.ipynb", student="your-id")`
 #
 # Either runs the notebook top to bottom in a fresh kernel, as the grader will, lists the cells that
 # fail, and writes `submissions/hw03-your-id.ipynb`. Upload that file. The checks above are feedback;

@@ -41,8 +41,9 @@
 import matplotlib.pyplot as plt
 import numpy as np
 
-from course_lib import PiecewiseBezier, variants
-from course_lib.checks import check, check_all
+from course_lib import PiecewiseBezier
+from course_lib.homework import variants
+from course_lib.homework.checks import check, check_all
 from course_lib.plotting import new_figure
 
 HOMEWORK = "hw04"
@@ -78,10 +79,10 @@ check("hw04.q1", answer_q1)
 # $\mathbf W_2$ from the second Beta-constraint; it must work for every degree.
 #
 # **You may use:** numpy (and plain Python); no function of `course_lib`.
-# `course_lib.stitching.g1_stitch_points`, `course_lib.stitching.g2_stitch_points`,
-# `course_lib.stitching.g2_stitch`, `course_lib.stitching.gn_stitch_points`,
-# `course_lib.stitching.gn_stitch`, `course_lib.beta_constraints.apply_beta_constraints`,
-# `course_lib.beta_constraints.beta_coefficients` do it for you, so they raise while your
+# `course_lib.constructions.stitching.g1_stitch_points`, `course_lib.constructions.stitching.g2_stitch_points`,
+# `course_lib.constructions.stitching.g2_stitch`, `course_lib.constructions.stitching.gn_stitch_points`,
+# `course_lib.constructions.stitching.gn_stitch`, `course_lib.geometry.beta_constraints.apply_beta_constraints`,
+# `course_lib.geometry.beta_constraints.beta_coefficients` do it for you, so they raise while your
 # function is checked or graded.
 
 # %%
@@ -142,7 +143,7 @@ check("hw04.q3", answer_q3)
 # `(m,)`) returning the $m - 1$ Bézier polygons as an array of shape `(m - 1, 3, 2)`.
 #
 # **You may use:** numpy (and plain Python); no function of `course_lib`.
-# `course_lib.beta_splines.quadratic_beta_spline` does it for you, so it raises while your
+# `course_lib.constructions.beta_splines.quadratic_cubic.quadratic_beta_spline` does it for you, so it raises while your
 # function is checked or graded.
 
 # %%
@@ -247,7 +248,7 @@ report
 # gave you with your variant code (your id on the course roster, e.g. your student number / SIS id):
 #
 # * in a terminal, from the course folder: `make submit HW=hw04 STUDENT=your-id`
-# * in a new cell here: `from course_lib.submit import submit; submit("hw04_beta_splines.ipynb", student="your-id")`
+# * in a new cell here: `from course_lib.homework.submit import submit; submit("hw04_beta_splines.ipynb", student="your-id")`
 #
 # Either runs the notebook top to bottom in a fresh kernel, as the grader will, lists the cells that
 # fail, and writes `submissions/hw04-your-id.ipynb`. Upload that file. The checks above are feedback;

@@ -48,10 +48,17 @@
 import matplotlib.pyplot as plt
 import numpy as np
 
-from course_lib import PiecewiseBezier, variants
-from course_lib.beta_splines import cubic_beta_spline
-from course_lib.checks import check, check_all
-from course_lib.outlines import Contour, Outline, classify_joints, glyph_outline, glyph_summary
+from course_lib import PiecewiseBezier
+from course_lib.constructions.beta_splines import cubic_beta_spline
+from course_lib.constructions.outlines import (
+    Contour,
+    Outline,
+    classify_joints,
+    glyph_outline,
+    glyph_summary,
+)
+from course_lib.homework import variants
+from course_lib.homework.checks import check, check_all
 from course_lib.plotting import plot_outline
 
 HOMEWORK = "hw05"
@@ -97,8 +104,8 @@ check("hw05.q1", answer_q1)
 # assume $A \ne B$ and $P_0 \ne P_2$.
 #
 # **You may use:** numpy (and plain Python); no function of `course_lib`.
-# `course_lib.outlines.classify_joints`, `course_lib.continuity.joint_continuity`,
-# `course_lib.continuity.curve_continuity` do it for you, so they raise while your function is
+# `course_lib.constructions.outlines.classification.classify_joints`, `course_lib.geometry.continuity.joint_continuity`,
+# `course_lib.geometry.continuity.curve_continuity` do it for you, so they raise while your function is
 # checked or graded.
 
 # %%
@@ -208,7 +215,7 @@ check("hw05.q4", answer_q4)
 # order from $V_0$ to $V_n$ (`cubic_beta_spline(points, 1.0, 0.0)` builds the B-spline; its
 # `.segments` are the Bézier polygons).
 #
-# **You may use:** numpy and `course_lib.beta_splines.cubic_beta_spline` (the B-spline itself);
+# **You may use:** numpy and `course_lib.constructions.beta_splines.cubic_beta_spline` (the B-spline itself);
 # the phantom vertices are the exercise.
 
 # %%
@@ -309,7 +316,7 @@ report
 # gave you with your variant code (your id on the course roster, e.g. your student number / SIS id):
 #
 # * in a terminal, from the course folder: `make submit HW=hw05 STUDENT=your-id`
-# * in a new cell here: `from course_lib.submit import submit; submit("hw05_are_letters_smooth.ipynb", student="your-id")`
+# * in a new cell here: `from course_lib.homework.submit import submit; submit("hw05_are_letters_smooth.ipynb", student="your-id")`
 #
 # Either runs the notebook top to bottom in a fresh kernel, as the grader will, lists the cells that
 # fail, and writes `submissions/hw05-your-id.ipynb`. Upload that file. The checks above are feedback;
