@@ -654,8 +654,12 @@ def main(argv: list[str] | None = None) -> int:
             "options": opts,
         }
 
+    grader_errors: list[str] = []
+
     def done(item: Item, data: dict) -> None:
         r = _finish_result(Result(**data), item, args, late)
+        if r.status.startswith("grader error"):
+            grader_errors.append(r.student)
         r.run_notes += intake.refusal_note(refused.get(r.student, []))
         out.lookup(r, item.who.entry)
         out.add(r)
@@ -681,7 +685,20 @@ def main(argv: list[str] | None = None) -> int:
         f"wrote {args.out / 'scores.csv'}, {args.out / 'summary.md'} and "
         f"{args.out / 'feedback'}{os.sep}" + (" -- UNSANDBOXED" if mode != "bwrap" else "")
     )
-    return 0
+    return _grader_error_exit(grader_errors, len(found))
+
+
+def _grader_error_exit(students: list[str], graded: int) -> int:
+    """3 and one sentence on stderr when rows failed on the grader's side (not the student's)."""
+    if not students:
+        return 0
+    print(
+        f"{len(students)} of {graded} submissions were not graded because the grader failed "
+        f"(status 'grader error'; the first: {students[0]}). Fix the cause and regrade them "
+        f"with --only; the scores of these rows are not grades.",
+        file=sys.stderr,
+    )
+    return 3
 
 
 if __name__ == "__main__":

@@ -49,7 +49,9 @@ REVIEW_NOTE = (
 )
 ZERO_NOTE = "0: flagged for the instructor's review (the notebook changes the grader's guards)"
 
-_GUARD_MODULES = frozenset({"own_work", "_probe"})
+_GUARD_MODULES = frozenset({"own_work", "protocol", "_probe"})
+# bare names that stand for a guard module even when not reached from ``course_lib``
+_GUARD_BARE = frozenset({"own_work", "_probe"})
 _FRAME_ATTRS = frozenset(
     {"f_locals", "f_globals", "f_back", "f_builtins", "tb_frame", "gi_frame", "cr_frame",
      "ag_frame", "f_trace"}
@@ -79,7 +81,7 @@ _SHELL_MAGICS = frozenset(
     {"system", "sx", "bash", "sh", "script", "python", "python2", "python3", "pypy", "perl",
      "ruby", "run", "writefile", "file"}
 )  # fmt: skip
-_HIDDEN_WORDS = ("own_work", "_probe", "f_locals", "_getframe", "sys.modules", "__code__",
+_HIDDEN_WORDS = ("own_work", "_probe", "homework.protocol", "f_locals", "_getframe", "sys.modules", "__code__",
                  "_ACTIVE", "ctypes", "subprocess")  # fmt: skip
 _PROTECTED_NAMES = ("HOMEWORK", "VARIANT")
 _MUTATORS = frozenset(
@@ -185,7 +187,7 @@ class _Scanner(ast.NodeVisitor):
             return False
         parts = dotted.split(".")
         return bool(_GUARD_MODULES & set(parts)) and (
-            parts[0] == "course_lib" or parts[0] in _GUARD_MODULES
+            parts[0] == "course_lib" or parts[0] in _GUARD_BARE
         )
 
     @staticmethod
