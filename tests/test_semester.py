@@ -221,7 +221,8 @@ def test_every_flag_is_where_the_instructor_looks_first(semester):
     assert "1004 (Lee, Tom)" in flags["Edited after submit() (checksum mismatch)"]
     assert "1002 (Roe, Rick)" in flags["Late"]
     assert "1003 (Poe, Ann)" in flags["Several notebooks (the newest graded)"]
-    assert "1005 (Fox, Sam)" in flags["Wrong variant code (whose code: see the feedback)"]
+    wrong = flags["Wrong variant code (whose code follows each name)"]
+    assert "1005 (Fox, Sam) (its VARIANT is the code of roster student 1001)" in wrong
     assert "Roster students without a submission (1): 1006 (Kim, Mia)" in first  # not the Test Student
     assert "Test" not in first
     assert f"{FULL}/{FULL} → {CANVAS_MAX}/{CANVAS_MAX} in Canvas" in summary
@@ -235,7 +236,14 @@ def test_every_flag_is_where_the_instructor_looks_first(semester):
     assert "wrong variant code" in results["1005"]["status"]
     assert results["strangerx_29999"]["status"].startswith("not graded")
     sam = next(p for p in (out / "feedback").iterdir() if p.name.startswith("1005"))
-    assert "the code of roster student 1001" in sam.read_text(encoding="utf-8")
+    sam_text = sam.read_text(encoding="utf-8")
+    assert "not the code you were given" in sam_text
+    # privacy: a student's feedback never names another student (whose code, whose manifest)
+    for path in (out / "feedback").iterdir():
+        text = path.read_text(encoding="utf-8")
+        own = path.name.split(".")[0].split("_")[0]
+        others = {"1001", "1002", "1003", "1004", "1005", "1006"} - {own}
+        assert not [o for o in others if f"student {o}" in text or f"of {o}" in text], path.name
     jane = (out / "feedback" / "1001.md").read_text(encoding="utf-8")
     assert "raised" not in jane  # her hand-in cell is not run by the grader
     assert f"{FULL}/{FULL} → {CANVAS_MAX}/{CANVAS_MAX} in Canvas" in jane

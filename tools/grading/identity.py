@@ -228,8 +228,10 @@ class Identity:
     student: str
     entry: object | None
     how: str  # "lms", "name", "manifest"
-    notes: list[str] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)  # for the student's feedback
     flags: list[str] = field(default_factory=list)
+    #: for the instructor only (summary.md, results.json): sentences that name another student
+    private: list[str] = field(default_factory=list)
 
 
 def identify(found: Found, index: RosterIndex | None) -> Identity:
@@ -278,9 +280,10 @@ def identify(found: Found, index: RosterIndex | None) -> Identity:
         if other is not None and other is not entry:  # another roster student's submit()
             ident.flags.append(ID_DIFFERS)
             ident.notes.append(
-                f"the submit() manifest names roster student {other.id} ({manifest_id!r}), but "
-                f"the {source} says {entry.id}: graded as {entry.id}"
+                f"the submit() manifest names another roster student, but the {source} says "
+                f"{entry.id}: graded as {entry.id}"
             )
+            ident.private.append(f"the manifest names roster student {other.id}")
         elif other is None:  # another form of id (an e-mail, a login): noted, not flagged
             ident.notes.append(
                 f"the submit() manifest names student {manifest_id!r}; the {source} says {entry.id}"

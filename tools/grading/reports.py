@@ -454,7 +454,7 @@ ACT_ON = (
     ("edited after submit", "Edited after submit() (checksum mismatch)"),
     ("manifest id differs", "The submit() manifest names another roster student"),
     ("manifest time disagrees", "The submit() manifest's time disagrees with the LMS/file time"),
-    ("wrong variant code", "Wrong variant code (whose code: see the feedback)"),
+    ("wrong variant code", "Wrong variant code (whose code follows each name)"),
     ("shared variant code", "The same variant code in several notebooks"),
     ("no variant code", "No variant code in the notebook (graded on their own data)"),
     ("late", "Late"),
@@ -467,10 +467,24 @@ def flags_of(r) -> list[str]:
     return [p.strip() for p in r.status.split(";")[1:]]
 
 
+#: flags whose details name another student: given in summary.md only, never in the feedback
+_PRIVATE = {
+    "manifest id differs": "the manifest names",
+    "wrong variant code": "its VARIANT is",
+    "shared variant code": "the same VARIANT",
+}
+
+
 def _why(r, flag: str) -> str:
-    """The scan's reasons after a name flagged for its code (tools/grading/tamper.py)."""
-    review = getattr(r, "review", None) if flag == "reaches into the grader" else None
-    return f" ({'; '.join(review)})" if review else ""
+    """The details after a flagged name: the scan's reasons (tools/grading/tamper.py), or whose
+    code or manifest it is (the instructor's notes; the student's feedback does not name them)."""
+    if flag == "reaches into the grader":
+        details = getattr(r, "review", None) or []
+    else:
+        start = _PRIVATE.get(flag)
+        notes = getattr(r, "private_notes", None) or []
+        details = [n for n in notes if start and n.startswith(start)]
+    return f" ({'; '.join(details)})" if details else ""
 
 
 def _named(e: RosterEntry) -> str:
@@ -556,7 +570,7 @@ def summary(
         "",
         "## Statistics",
         "",
-        f"{len(results)} submissions graded"
+        f"{len(results)} submission{'' if len(results) == 1 else 's'} graded"
         + (" (roster students)" if roster is not None else "")
         + f"; maximum {tests.max_points:g} points.",
     ]
