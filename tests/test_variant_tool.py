@@ -148,3 +148,15 @@ def test_variants_find_each_generator_in_its_checks_module_by_name():
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.split() == ["False", "True", "None", "None", "['hw01',", "'hw02']"]
+
+
+def test_a_new_instructors_folders_and_typos_get_one_sentence(tmp_path):
+    """The semester page suggests ``~/teaching/2026/course_secret.txt``: a folder that does not
+    exist yet is made (private); a roster that is not there is one sentence, not a traceback."""
+    secret = tmp_path / "teaching" / "2026" / "course_secret.txt"
+    assert tool.main(["secret", "--out", str(secret)]) == 0
+    assert stat.S_IMODE(secret.parent.stat().st_mode) == 0o700
+    assert stat.S_IMODE(secret.stat().st_mode) == 0o600
+    with pytest.raises(SystemExit) as stop:
+        tool.main(["codes", "hw01", "--secret-file", str(secret), "--roster", str(tmp_path / "nope.csv")])
+    assert str(stop.value) == f"--roster {tmp_path / 'nope.csv'}: No such file or directory"

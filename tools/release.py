@@ -83,6 +83,19 @@ that calls `submit` is not run again — lists the cells that raise an error, sa
 pass (and if `VARIANT` is still empty), and writes `submissions/hw01-your-id.ipynb` with a small
 manifest (your id, the homework, the time, a checksum). Upload that file where your instructor
 says, without opening and saving it again (the grader notices a file changed after `submit`).
+
+## Accessibility
+
+The course aims at WCAG 2.1 AA. Every figure has a text description (printed under it in
+JupyterLab). Every demo with draggable points can be used with the keyboard alone: a point
+selector, coordinate fields (arrow keys nudge the point) and nudge buttons; the continuity
+report is read out by screen readers as it changes. A check that fails says so in words
+("not right yet"), not only with a symbol. The demos' sliders are named for screen readers
+when you run the demo's cell yourself (an output saved from an earlier session is not trusted:
+run the cell again). If something stands in
+your way — a figure you cannot follow, a control you cannot reach, a colour you cannot tell
+apart — tell your instructor: they will help with the homework at once and pass the barrier on
+to the course's authors, who fix it like any other bug.
 """
 
 STUDENT_MAKEFILE = """# The student edition's commands (Python 3.10+):

