@@ -274,3 +274,19 @@ def test_library_folders_are_read_from_the_maps_of_a_process():
         "7f1d78000000-7f1d78100000 rw-p 00000000 00:00 0\n"
     )
     assert sandbox.library_folders(maps) == [Path("/nix/store/abc-zlib/lib"), Path("/opt/py/lib")]
+
+
+def test_root_without_a_pids_group_is_warned(tmp_path, monkeypatch):
+    """As root, RLIMIT_NPROC binds nothing: without a ``pids`` group the grader says so."""
+    own = _v2_tree(tmp_path)
+    layout = sandbox.cgroup_layout(tmp_path, V2_SELF)
+    monkeypatch.setattr(sandbox.os, "geteuid", lambda: 0)
+
+    def groups(limits):
+        return sandbox.SandboxGroups(limits, layout=layout, root_only=False)
+
+    assert sandbox.process_limit_warning(LIMITS, groups) == ""
+    (own / "cgroup.subtree_control").unlink()
+    (own / "cgroup.subtree_control").mkdir()  # not delegated: no controller for children
+    warning = sandbox.process_limit_warning(LIMITS, groups)
+    assert "without a usable pids cgroup" in warning and "RLIMIT_NPROC" in warning

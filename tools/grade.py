@@ -597,6 +597,24 @@ def _grade_locally(args, found: list[Item], payload, done) -> None:
             done(futures[future], future.result())
 
 
+def _preflight(options: dict) -> bool:
+    """Prove the sandbox starts the course's kernels (else one sentence, False); warn when
+    nothing would bound a submission's processes."""
+    problem = check_sandbox(Options(**options))
+    if problem:
+        print(
+            f"the sandbox cannot run the course's kernels: {problem}. Nothing was graded "
+            "(a link to the environment is followed for you; bind or copy what is missing, "
+            "or use --sandbox none for trusted submissions only).",
+            file=sys.stderr,
+        )
+        return False
+    warning = sandbox.process_limit_warning(options["limits"])
+    if warning:
+        print(warning, file=sys.stderr, flush=True)
+    return True
+
+
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     tests = HiddenTests.load(args.tests)
@@ -630,16 +648,8 @@ def main(argv: list[str] | None = None) -> int:
     if message:
         print(message, file=sys.stderr, flush=True)
     options = _run_options(args, mode)
-    if mode == "bwrap":  # prove it once, before anyone is graded
-        problem = check_sandbox(Options(**options))
-        if problem:
-            print(
-                f"the sandbox cannot run the course's kernels: {problem}. Nothing was graded "
-                "(a link to the environment is followed for you; bind or copy what is missing, "
-                "or use --sandbox none for trusted submissions only).",
-                file=sys.stderr,
-            )
-            return 2
+    if mode == "bwrap" and not _preflight(options):  # proved once, before anyone is graded
+        return 2
     args.out.mkdir(parents=True, exist_ok=True)
     keep = None if args.only is None else _kept_rows(args.out, tests, found)
     out = Reports(tests, args.out, fmt=args.format, roster=roster, late=late, keep=keep,

@@ -516,6 +516,29 @@ class SandboxGroups:
             time.sleep(0.05)
 
 
+def process_limit_warning(limits: Limits, groups: type[SandboxGroups] | None = None) -> str:
+    """One sentence when nothing would bound the number of a sandbox's processes, else "".
+
+    ``RLIMIT_NPROC`` does not bind root, so a grader running as root needs the ``pids``
+    cgroup; where none can be made (a container whose root group holds processes, a host
+    without the controller) a fork bomb is bounded by nothing but the host.  ``groups`` is for
+    tests (a fake cgroupfs).
+    """
+    if os.geteuid() != 0:
+        return ""
+    probe = (groups or SandboxGroups)(limits)
+    try:
+        if "pids" in probe.paths:
+            return ""
+    finally:
+        probe.kill_and_remove()
+    return (
+        "warning: running as root without a usable pids cgroup, so nothing bounds the number "
+        "of processes a submission starts (root ignores RLIMIT_NPROC); run the grader as an "
+        "ordinary user, or on a host where the pids controller can be used"
+    )
+
+
 def _configure(path: Path, settings: list[tuple[str, str]]) -> bool:
     try:
         for key, value in settings:
