@@ -1,8 +1,8 @@
 # The course's commands.  On a fresh machine (Python 3.10+):
 #   make lab    create .venv, install the course, open JupyterLab on notebooks/00_welcome.ipynb
 #   make test   create .venv, install the course, run the whole test suite
-#   make present L=04   the lecture as projector slides with live demos (Voila, see README)
-#   make bench  print the benchmark table;  make grade  grade a folder of homework (see README)
+#   make present L=04   the lecture as projector slides with live demos (Voila, see site/teaching.md)
+#   make bench  print the benchmark table;  make grade  grade a folder of homework (see site/grading.md)
 #   make site   the course as a static website in build/site/ (index.html; any static host)
 #   make handouts  one PDF per lecture in build/handouts/ (needs Debian's chromium)
 PYTHON ?= python3
@@ -76,7 +76,7 @@ release: install
 	$(BIN)/python tools/release.py --out dist/student-edition
 
 # The website: lectures and blank homework executed (cached in build/site-cache/), demos as
-# static figures, MathJax bundled; nothing is loaded from the network.  See README.
+# static figures, MathJax bundled; nothing is loaded from the network.  See site/teaching.md.
 site: install
 	$(BIN)/python tools/build_site.py
 
