@@ -266,9 +266,11 @@ def tangent_plane_demo(
     for name, spec in PATCH_SLIDERS.items():
         s = slider(spec, state.params[name])
         demo.controls[name] = s
-        observe(
-            demo, s, lambda ch, name=name, spec=spec: state.set_param(name, snap_to_step(spec, ch["new"]))
-        )
+
+        def moved(change, name=name, spec=spec) -> None:
+            state.set_param(name, snap_to_step(spec, change["new"]))
+
+        observe(demo, s, moved)
         rows.append(s)
     live = w.HTML(layout=w.Layout(width="auto", min_height="1.5em"))
     live.add_class("cl-live")
