@@ -179,7 +179,8 @@ class TangentPlaneView:
     """The two patches, their boundary and normals (redrawn coarse), the verdict as title.
 
     A 3D picture changes everywhere when ``G`` changes, so there is nothing to blit: the
-    Axes is cleared and redrawn with coarse meshes, keeping the viewer's rotation.
+    Axes is cleared and redrawn with coarse meshes and without its axes (panes, ticks),
+    keeping the viewer's rotation.
     """
 
     #: samples per direction of each surface: coarse, so that a redraw stays quick
@@ -203,7 +204,7 @@ class TangentPlaneView:
             self.artists.motion.disconnect()
         ax.clear()
         self.artists = plot_patch_pair(
-            ax, st.F, st.G, net=False, length=1.0, zoom=1.05, resolution=self.RESOLUTION,
+            ax, st.F, st.G, net=False, length=1.0, zoom=1.5, resolution=self.RESOLUTION,
             normals=st.report is not None,
         )  # fmt: skip
         # the control points the construction fixes: G's first two rows, joined across
@@ -216,6 +217,9 @@ class TangentPlaneView:
         ax.plot([P[0]], [P[1]], [P[2]], "o", ms=10, mfc="none", mec=OKABE_ITO["black"], mew=2,
                 label="the point “lift” moves")  # fmt: skip
         ax.view_init(elev=elev, azim=azim)
+        # no panes, ticks or numbers: they are not the point, and they cost half of a frame
+        # (measured 225 -> 100 ms per draw at 880 px on the course's busy 2-core machine)
+        ax.set_axis_off()
         ax.legend(loc="upper left", fontsize=9)
         colour = OKABE_ITO["black"] if st.g1 else OKABE_ITO["vermillion"]
         ax.set_title(st.verdict(), fontsize=11, color=colour)
