@@ -19,6 +19,7 @@ from course_lib.plotting.lecture_figures import (
 )
 from course_lib.plotting.surface_figures import plot_domain_and_patch, plot_parameter_lines
 from course_lib.plotting.surfaces3d import plot_patch_pair
+from course_lib.widgets.patches import tangent_plane_demo
 
 __all__ = [
     "BezierPatch",
@@ -31,4 +32,5 @@ __all__ = [
     "plot_parameter_lines",
     "plot_patch_pair",
     "tangent_plane_continuity",
+    "tangent_plane_demo",
 ]

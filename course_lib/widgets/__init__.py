@@ -18,7 +18,8 @@ The RISE slide view does not render ipywidgets or ipympl (jupyterlab-contrib/ris
 Layout: ``state`` (what a demo is: :class:`CurveDemoState`), ``view`` (how it is drawn:
 :class:`CurveDemoView`, :class:`BlitView`), ``assembly`` (the widgets around them:
 :class:`Demo`, sliders, selectors), ``_controls`` (a curve demo's standard controls),
-``access`` (keyboard and screen readers), ``demos``, ``reparam``, ``outlines`` (the demos).
+``access`` (keyboard and screen readers), ``demos``, ``reparam``, ``outlines``, ``patches``
+(the demos; ``patches``: two Bézier patches and their tangent plane, lecture 10).
 No widget module computes: the numbers come from the math modules
 (:func:`course_lib.geometry.continuity.joint_report` for the live report).
 
@@ -44,6 +45,7 @@ from course_lib.widgets.demos import (
 )
 from course_lib.widgets.interactor import PointDragger
 from course_lib.widgets.outlines import GlyphDemoState, glyph_demo
+from course_lib.widgets.patches import TangentPlaneState, tangent_plane_demo
 from course_lib.widgets.reparam import ReparametrizationState
 from course_lib.widgets.state import CurveDemoState, SliderSpec
 from course_lib.widgets.view import BlitView, CurveDemoView
@@ -57,6 +59,7 @@ __all__ = [
     "PointDragger",
     "ReparametrizationState",
     "SliderSpec",
+    "TangentPlaneState",
     "beta_spline_demo",
     "catmull_rom_demo",
     "curvature_comb_demo",
@@ -66,4 +69,5 @@ __all__ = [
     "knot_spline_demo",
     "quartic_beta_spline_demo",
     "reparametrization_demo",
+    "tangent_plane_demo",
 ]
