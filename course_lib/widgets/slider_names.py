@@ -37,8 +37,10 @@ SLIDER_NAMES_JS = r"""
     for (const canvas of document.querySelectorAll('.cl-demo canvas')) {
       if (!canvas.getAttribute('aria-label')) {
         canvas.setAttribute('role', 'img');
-        canvas.setAttribute('aria-label', 'demo figure: the curve, its control points and ' +
-          'the selected joint; move a point with the point controls below the figure');
+        const demo = canvas.closest('.cl-demo');
+        const points = demo && demo.querySelector('.cl-point-controls');
+        canvas.setAttribute('aria-label', 'demo figure, described by the report below it' +
+          (points ? '; move a point with the point controls below the figure' : ''));
       }
     }
   };
