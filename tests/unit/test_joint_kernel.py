@@ -141,3 +141,27 @@ def test_leading_order_and_bad_shapes():
     assert leading_order(np.ones((3, 2), bool)).tolist() == [3, 3]
     with pytest.raises(ValueError, match="dq and dr"):
         joint_kernel(np.zeros((1, 2, 2)), np.zeros((1, 2, 2)))
+
+
+@pytest.mark.parametrize("eps", [1e-3, 1e-5])
+def test_measure_and_tolerance_of_order_two_by_hand(eps):
+    """r'' moved by eps off the Beta-constraint along the normal: the curvature vector jumps
+    by eps / |r'|^2, so delta_2 = eps l / |r'|^2 with l = max(|q'|, |r'|) (h = 1); the tolerance
+    is rtol max(1, l max|K|), and the verdict flips with rtol between the two."""
+    q = _cubic([(0, 0), (1, 2), (3, 3), (4, 1)])
+    a0, a1, a2 = (q.diff(t, i).subs(t, 1) for i in range(3))
+    normal = sp.Matrix([-a1[1], a1[0]]) / sp.sqrt((a1.T * a1)[0])
+    r1, r2 = 2 * a1, 4 * a2 + a1 + sp.nsimplify(eps) * normal
+    R1 = a0 + r1 / 3
+    r = _cubic([tuple(a0), tuple(R1), tuple(2 * R1 - a0 + r2 / 6), (9, -2)])
+    vq, vr = float(sp.sqrt((a1.T * a1)[0])), float(sp.sqrt((r1.T * r1)[0]))
+    ell = max(vq, vr)
+    delta = eps * ell / vr**2
+    J = _kernel(q, r, max_order=2, rtol=1e-8)
+    assert J.measure[0, 1] == pytest.approx(delta, rel=1e-6)
+    kmax = max(abs(J.curvature_in[0]), abs(J.curvature_out[0]))
+    assert J.tolerance[0, 1] == pytest.approx(1e-8 * max(1.0, ell * kmax), rel=1e-12)
+    assert J.g_order.tolist() == [1]
+    loose = delta / max(1.0, ell * kmax) * 1.01  # just above the measure: G2
+    assert _kernel(q, r, max_order=2, rtol=loose).g_order.tolist() == [2]
+    assert _kernel(q, r, max_order=2, rtol=loose / 1.02).g_order.tolist() == [1]
