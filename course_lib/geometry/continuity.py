@@ -39,6 +39,11 @@ orders' tolerated discrepancies times the curvature scale); where a measure lies
 a factor 10 of ``rtol``, or the three disagree, the report says the joint is
 ``borderline`` (test: ``tests/unit/test_continuity_fast.py::test_characterizations_agree_near_the_threshold``).
 
+The per-joint quantities (gap, tangent angle, arc-length derivatives, curvature jump) and
+the arc-length characterization with the tolerance of order ``k`` come from
+:func:`~course_lib.geometry.joint_kernel.joint_kernel`, the kernel the outline classifier
+calls too: the G-order rule is written once, there.
+
 For a :class:`~course_lib.curves.curve.PiecewiseBezier`, :func:`curve_continuity` uses the
 *global* parameter (knots): the knots change the C-order but never the G-order.
 
