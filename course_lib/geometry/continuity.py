@@ -39,6 +39,11 @@ orders' tolerated discrepancies times the curvature scale); where a measure lies
 a factor 10 of ``rtol``, or the three disagree, the report says the joint is
 ``borderline`` (test: ``tests/unit/test_continuity_fast.py::test_characterizations_agree_near_the_threshold``).
 
+The per-joint quantities (gap, tangent angle, arc-length derivatives, curvature jump) and
+the arc-length characterization with the tolerance of order ``k`` come from
+:func:`~course_lib.geometry.joint_kernel.joint_kernel`, the kernel the outline classifier
+calls too: the G-order rule is written once, there.
+
 For a :class:`~course_lib.curves.curve.PiecewiseBezier`, :func:`curve_continuity` uses the
 *global* parameter (knots): the knots change the C-order but never the G-order.
 
@@ -60,7 +65,8 @@ from course_lib.curves.bezier import end_derivative_matrix
 from course_lib.curves.curve import PiecewiseBezier
 from course_lib.curves.parametrization import as_parametrization
 from course_lib.geometry.chain_rule import bell_row, check_chain_rule_order
-from course_lib.geometry.differential_geometry import arc_length_derivatives_unscaled, typical_speed
+from course_lib.geometry.differential_geometry import typical_speed
+from course_lib.geometry.joint_kernel import joint_kernel, leading_order
 from course_lib.homework import own_work
 from course_lib.validation import check_finite_scalar, check_integer, scaled_norm
 
@@ -274,20 +280,14 @@ def _reports(
     # scale-free, and nothing overflows or underflows over the whole float range
     _, e = np.frexp(ell)
     dq, dr = np.ldexp(dq, -e[None, :, None]), np.ldexp(dr, -e[None, :, None])
-    gapped = gap > rtol * ell + atol  # in the curve's units
-    vq, vr, ell = np.ldexp(vq, -e), np.ldexp(vr, -e), np.ldexp(ell, -e)
     atol_n = np.ldexp(atol, -e)  # atol in the rescaled units
-    cosang = np.einsum("jd,jd->j", dq[1], dr[1]) / (vq * vr)
-    if dq.shape[2] == 2:
-        cross = np.abs(dq[1, :, 0] * dr[1, :, 1] - dq[1, :, 1] * dr[1, :, 0])
-    else:
-        cross = _norms(np.cross(dq[1], dr[1]))
-    angle = np.degrees(np.arctan2(cross / (vq * vr), cosang))
-    m = max(n, 2)
-    A = arc_length_derivatives_unscaled(  # both sides in one vectorized call: (m, 2J, dim)
-        np.concatenate([dq[: m + 1], dr[: m + 1]], axis=1), np.concatenate([vq, vr]), m
+    # gap, angle, arc-length derivatives and the G-order rule by arc length (§6): the
+    # joint kernel shared with the outline classifier
+    K = joint_kernel(
+        np.moveaxis(dq, 0, 1), np.moveaxis(dr, 0, 1), n, lengths=(hq, hr), rtol=rtol, atol=atol_n
     )
-    Aq, Ar = A[:n, :J], A[:n, J:]
+    gapped, angle = K.gapped, K.angle
+    vq, vr, ell = K.speed_in, K.speed_out, K.length
     Q, R = dq[1 : n + 1], dr[1 : n + 1]
     # (2) Beta-constraints: β's solved order by order, residuals must vanish
     betas, res, B = _solve_betas(Q, R)
@@ -296,8 +296,8 @@ def _reports(
     #     has u(a) = a and u^(j)(a) = β_j, so (q o u)^(i)(a) = sum_k B_{i,k}(β) q^(k)(a)
     #     (Faà di Bruno); q o u must meet r with C^n.
     Qbar = np.einsum("ikj,kjd->ijd", B[1:, 1:], Q)
-    N = _norms(np.stack([Q, R, Q - R, Qbar - R, Aq - Ar, res, Aq, Ar]))
-    jump = np.ldexp(_norms(A[1, J:] - A[1, :J]), -e)  # back to the curve's units
+    N = _norms(np.stack([Q, R, Q - R, Qbar - R, res]))
+    jump = np.ldexp(K.curvature_jump, -e)  # back to the curve's units
     k = np.arange(1, n + 1)[:, None]
     lk = ell ** (k - 1.0)
     # C^n: derivatives compared with the magnitudes of order k (parametrization-dependent)
@@ -306,20 +306,18 @@ def _reports(
     # order k as a derivative with respect to arc length, made dimensionless with the
     # length scale ell.  The Beta residual e_k = r^(k) - (q o u)^(k) is perpendicular to
     # q' and, once the lower orders agree, equals v_r^k (d^k r/ds^k - d^k q/ds^k): the
-    # three measures are one number computed three ways.
+    # three measures are one number computed three ways, compared with the kernel's
+    # tolerance of order k (the same for the three)
     delta = np.stack(
         [
-            N[5] * lk / vr**k,  # Beta-constraints residual
+            N[4] * lk / vr**k,  # Beta-constraints residual
             N[3] * lk / vr**k,  # reparametrization: q o u against r
-            N[4] * lk,  # arc length
+            K.measure.T,  # arc length (the kernel's measure)
         ]
     )
-    # the tolerance of order k, the same for the three: rtol relative to the (equally
-    # dimensionless) size of the arc-length derivatives of order k, at least rtol
-    tol = rtol * np.maximum(1.0, np.maximum(N[6], N[7]) * lk) + atol_n * lk / vr**k
+    tol = K.tolerance.T
     ok = np.concatenate([(N[2] <= rtol * scale + atol_n)[None], delta <= tol])
-    lead = np.argmin(np.concatenate([ok, np.zeros((4, 1, J), bool)], axis=1), axis=1)
-    c_order, g_beta, g_rep, g_arc = lead
+    c_order, g_beta, g_rep, g_arc = leading_order(np.moveaxis(ok, 1, 0))
     g_beta = np.where(positive, g_beta, 0)
     g_rep = np.where(positive, g_rep, 0)
     # borderline: a measure of an order that decided (the passing ones and the first
@@ -330,7 +328,7 @@ def _reports(
     near = (delta > tol / BORDERLINE_FACTOR) & (delta <= tol * BORDERLINE_FACTOR)
     disagree = (g_beta != g_rep) | (g_beta != g_arc)
     borderline = (np.any(near & decided[None], axis=(0, 1)) & positive) | disagree
-    res = np.ldexp(N[5], e[None, :])
+    res = np.ldexp(N[4], e[None, :])
 
     out = []
     for j in range(J):

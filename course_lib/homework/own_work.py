@@ -152,6 +152,7 @@ _FUNCTIONS = (
         "geometry.beta_constraints.solve_shape_parameters",
         "geometry.continuity.joint_continuity",
         "geometry.continuity.curve_continuity",
+        "geometry.joint_kernel._arc_length_orders",
     ),
     _ex(
         "hw03.q2",
@@ -189,6 +190,7 @@ _FUNCTIONS = (
         "constructions.outlines.classification.classify_joints",
         "geometry.continuity.joint_continuity",
         "geometry.continuity.curve_continuity",
+        "geometry.joint_kernel._arc_length_orders",
     ),
     _ex(
         "hw05.q5",
@@ -255,6 +257,7 @@ _VALUES = (
         "geometry.beta_constraints.solve_shape_parameters",
         "geometry.continuity.joint_continuity",
         "geometry.continuity.curve_continuity",
+        "geometry.joint_kernel._arc_length_orders",
         "geometry.continuity._solve_betas",
     ),
     _ex(
@@ -264,6 +267,7 @@ _VALUES = (
         "geometry.beta_constraints.solve_shape_parameters",
         "geometry.continuity.joint_continuity",
         "geometry.continuity.curve_continuity",
+        "geometry.joint_kernel._arc_length_orders",
         "geometry.continuity._solve_betas",
     ),
     _ex(

@@ -1,6 +1,7 @@
 """Every joint of an outline classified, vectorized: gap, tangent angle, signed curvature on
-both sides, the strict G-order (the rule of :func:`~course_lib.geometry.continuity.joint_continuity`)
-and the type designer's kind (corner / G1 / G2)."""
+both sides, the strict G-order (the rule of :func:`~course_lib.geometry.continuity.joint_continuity`,
+computed once by :func:`~course_lib.geometry.joint_kernel.joint_kernel`, seed 000 §6) and the
+type designer's kind (corner / G1 / G2)."""
 
 from __future__ import annotations
 
@@ -10,6 +11,7 @@ import numpy as np
 
 from course_lib.constructions.outlines.contours import Outline
 from course_lib.curves.bezier import end_derivative_matrix
+from course_lib.geometry.joint_kernel import joint_kernel
 from course_lib.homework import own_work
 from course_lib.validation import check_finite_scalar
 
@@ -106,10 +108,6 @@ def _end_data(segs: list[np.ndarray]):
     return out, scale
 
 
-def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
-
-
 def classify_joints(
     outline: Outline,
     *,
@@ -173,25 +171,22 @@ def classify_joints(
         return JointTable(i, i, np.zeros((0, 2)), e, e, e, e, e, b, b, i, e.astype(str))
     data, scale = _end_data(segs)
     qi, ri = np.concatenate(q_idx), np.concatenate(r_idx)
-    dq1, dq2, dr1, dr2 = data["b1"][qi], data["b2"][qi], data["a1"][ri], data["a2"][ri]
-    vq, vr = np.linalg.norm(dq1, axis=1), np.linalg.norm(dr1, axis=1)
-    regular = (vq > 1e-10 * scale[qi]) & (vr > 1e-10 * scale[ri])
-    ell = np.maximum(vq, vr)
-    gap = np.linalg.norm(data["p0"][ri] - data["p1"][qi], axis=1)
-    tq, tr = data["tb"][qi], data["ta"][ri]
-    nq, nr = np.linalg.norm(tq, axis=1), np.linalg.norm(tr, axis=1)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        Tq, Tr = tq / nq[:, None], tr / nr[:, None]
-        angle = np.degrees(np.arctan2(np.abs(_cross(Tq, Tr)), np.einsum("ij,ij->i", Tq, Tr)))
-        kq = np.where(regular, _cross(dq1, dq2) / vq**3, np.nan)
-        kr = np.where(regular, _cross(dr1, dr2) / vr**3, np.nan)
-        denom = np.maximum.reduce([np.abs(kq), np.abs(kr), 1.0 / ell])
-        rel = np.abs(kr - kq) / denom
-    # Strict G-order, the continuity report's arc-length rule (seed 000 §6).
-    g = np.where(gap > rtol * ell, -1, 0)
-    g1 = (g == 0) & regular & (np.linalg.norm(Tq - Tr, axis=1) <= rtol)
-    g = np.where(g1, 1, g)
-    g = np.where(g1 & (rel <= rtol), 2, g)
+    # gap, tangent angle, signed curvature and the strict G-order: the joint kernel shared
+    # with the continuity report (seed 000 §6).  Two outline settings, explicit: the angle
+    # of the geometric tangents (a singular end still has one) and regularity relative to
+    # each segment's control-point extent.
+    dq = np.stack([data["p1"][qi], data["b1"][qi], data["b2"][qi]], axis=1)  # (m, 3, 2)
+    dr = np.stack([data["p0"][ri], data["a1"][ri], data["a2"][ri]], axis=1)
+    K = joint_kernel(
+        dq,
+        dr,
+        2,
+        rtol=rtol,
+        speed_scales=(scale[qi], scale[ri]),
+        directions=(data["tb"][qi], data["ta"][ri]),
+    )
+    gap, angle, regular, ell = K.gap, K.angle, K.regular, K.length
+    kq, kr, rel, g = K.curvature_in, K.curvature_out, K.rel_jump, K.g_order
     kind = np.full(qi.size, "G1", dtype="<U8")
     kind[rel <= curvature_rtol] = "G2"
     kind[angle > corner_angle] = "corner"
@@ -212,5 +207,3 @@ def classify_joints(
         kind,
         {"corner_angle": corner_angle, "curvature_rtol": curvature_rtol, "rtol": rtol},
     )
-
-
