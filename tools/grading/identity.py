@@ -238,32 +238,8 @@ def identify(found: Found, index: RosterIndex | None) -> Identity:
     """The one identity of a submission (see the module docstring for the order of trust)."""
     manifest_id = found.manifest["student"] if found.manifest else None
     if index is None:
-        if found.lms != "file":
-            student = found.names[0] if found.names else f"{found.lms_name}_{found.lms_id}"
-            how = "lms"
-        elif found.names:
-            student, how = found.names[-1] if len(found.names) > 1 else found.names[0], "name"
-        else:
-            student, how = manifest_id or found.rel, "manifest"
-        ident = Identity(student, None, how)
-        if manifest_id and manifest_id != student:
-            ident.notes.append(f"the submission's manifest names student {manifest_id!r}")
-        return ident
-    entry, how = None, ""
-    if found.lms != "file":
-        entry = index.get(found.lms_id)
-        if entry is None and found.lms == "moodle":
-            entry = index.by_full_name(found.lms_name)
-        how = "lms" if entry is not None else ""
-    if entry is None:
-        for name in found.names:
-            entry = index.get(name)
-            if entry is not None:
-                how = "name"
-                break
-    if entry is None and manifest_id:
-        entry = index.get(manifest_id)
-        how = "manifest" if entry is not None else ""
+        return _identify_without_roster(found, manifest_id)
+    entry, how = _roster_entry(found, index, manifest_id)
     if entry is None:
         label = found.names[-1] if found.names else (found.lms_name or found.rel)
         if found.lms != "file":
@@ -275,20 +251,60 @@ def identify(found: Found, index: RosterIndex | None) -> Identity:
         return ident
     ident = Identity(entry.key, entry, how)
     if manifest_id and how != "manifest":
-        other = index.get(manifest_id)
-        source = "LMS" if how == "lms" else "file name"
-        if other is not None and other is not entry:  # another roster student's submit()
-            ident.flags.append(ID_DIFFERS)
-            ident.notes.append(
-                f"the submit() manifest names another roster student, but the {source} says "
-                f"{entry.id}: graded as {entry.id}"
-            )
-            ident.private.append(f"the manifest names roster student {other.id}")
-        elif other is None:  # another form of id (an e-mail, a login): noted, not flagged
-            ident.notes.append(
-                f"the submit() manifest names student {manifest_id!r}; the {source} says {entry.id}"
-            )
+        _compare_manifest(ident, index, manifest_id)
     return ident
+
+
+def _identify_without_roster(found: Found, manifest_id: str | None) -> Identity:
+    """Without a roster: the LMS's naming, else the file or folder name, else the manifest."""
+    if found.lms != "file":
+        student = found.names[0] if found.names else f"{found.lms_name}_{found.lms_id}"
+        how = "lms"
+    elif found.names:
+        student, how = found.names[-1] if len(found.names) > 1 else found.names[0], "name"
+    else:
+        student, how = manifest_id or found.rel, "manifest"
+    ident = Identity(student, None, how)
+    if manifest_id and manifest_id != student:
+        ident.notes.append(f"the submission's manifest names student {manifest_id!r}")
+    return ident
+
+
+def _roster_entry(found: Found, index: RosterIndex, manifest_id: str | None):
+    """``(roster entry or None, how it was found)``, in the order of trust."""
+    if found.lms != "file":
+        entry = index.get(found.lms_id)
+        if entry is None and found.lms == "moodle":
+            entry = index.by_full_name(found.lms_name)
+        if entry is not None:
+            return entry, "lms"
+    for name in found.names:
+        entry = index.get(name)
+        if entry is not None:
+            return entry, "name"
+    if manifest_id:
+        entry = index.get(manifest_id)
+        if entry is not None:
+            return entry, "manifest"
+    return None, ""
+
+
+def _compare_manifest(ident: Identity, index: RosterIndex, manifest_id: str) -> None:
+    """The submit() manifest against the identity the LMS or the file name gave."""
+    entry = ident.entry
+    other = index.get(manifest_id)
+    source = "LMS" if ident.how == "lms" else "file name"
+    if other is not None and other is not entry:  # another roster student's submit()
+        ident.flags.append(ID_DIFFERS)
+        ident.notes.append(
+            f"the submit() manifest names another roster student, but the {source} says "
+            f"{entry.id}: graded as {entry.id}"
+        )
+        ident.private.append(f"the manifest names roster student {other.id}")
+    elif other is None:  # another form of id (an e-mail, a login): noted, not flagged
+        ident.notes.append(
+            f"the submit() manifest names student {manifest_id!r}; the {source} says {entry.id}"
+        )
 
 
 #: Moodle's grading worksheet ("Download grading worksheet", assignfeedback_offline: the grading

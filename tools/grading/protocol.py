@@ -190,21 +190,26 @@ def parse_response(text: str | bytes | None) -> Any:
         if "value" not in response:
             raise ChannelBroken("the result could not be read")
         return response["value"]
+    raise _error_of(response)
+
+
+def _error_of(response: dict) -> Exception:
+    """The exception a failed response stands for (its ``error`` kind and ``message``)."""
     kind = response.get("error")
     message = str(response.get("message", ""))[:300]
     if kind == "missing":
-        raise MissingAnswer(message)
+        return MissingAnswer(message)
     if kind == "ellipsis":
-        raise NotAnswered(message)
+        return NotAnswered(message)
     if kind == "not_implemented":
-        raise NotAnswered("the function still raises NotImplementedError")
+        return NotAnswered("the function still raises NotImplementedError")
     if kind == "raised":
-        raise StudentRaised(raised_note(message))
+        return StudentRaised(raised_note(message))
     if kind == "exercise":
-        raise StudentRaised(exercise_note(response), exercise=True)
+        return StudentRaised(exercise_note(response), exercise=True)
     if kind == "unsupported":
-        raise BadAnswer(message)
-    raise ChannelBroken("the result could not be read")
+        return BadAnswer(message)
+    return ChannelBroken("the result could not be read")
 
 
 # ---------------------------------------------------------------- encoding grader data
