@@ -49,6 +49,17 @@ SLIDER_NAMES_JS = r"""
     requestAnimationFrame(() => { queued = false; fix(); });
   };
   window.__courseSliderNames = fix;
+  // WCAG 2.1.2 (no keyboard trap): ipympl's canvas is a tab stop whose keydown handler calls
+  // preventDefault on every key, Tab included, so Tab never leaves a demo's canvas (JupyterLab
+  // and Voila alike).  Tab and Shift+Tab on a course demo's canvas are stopped here, in the
+  // capture phase before ipympl sees them, and move the focus on as everywhere else.
+  document.addEventListener('keydown', (e) => {
+    const t = e.target;
+    if (e.key === 'Tab' && t && t.classList &&
+        t.classList.contains('jupyter-matplotlib-canvas-div') && t.closest('.cl-demo')) {
+      e.stopPropagation();
+    }
+  }, true);
   new MutationObserver(later).observe(document.body, {
     subtree: true, childList: true, characterData: true,
     attributes: true, attributeFilter: ['aria-valuetext'],

@@ -53,15 +53,15 @@ SLIDES_JS = """() => ({y: Math.round(window.scrollY),
   nav: (document.getElementById('deck-nav') || {}).textContent || ''})"""
 
 
-def _tab_to(page, where: str, limit: int = 400, key: str = "Tab") -> int:
-    """Press ``key`` (Tab, or Shift+Tab) until the focus is inside the element whose class
-    list contains ``where``; returns the number of presses."""
+def _tab_to(page, css: str, limit: int = 400, key: str = "Tab") -> int:
+    """Press ``key`` (Tab, or Shift+Tab) until the focused element matches ``css``;
+    returns the number of presses."""
     for n in range(1, limit + 1):
         page.keyboard.press(key)
-        f = page.evaluate(FOCUS_JS)
-        if where in f["where"].split():
+        if page.evaluate("(css) => !!document.activeElement?.matches(css)", css):
             return n
-    raise AssertionError(f"{limit} Tab presses never reached {where!r}; focus is on {f}")
+    f = page.evaluate(FOCUS_JS)
+    raise AssertionError(f"{limit} presses of {key} never reached {css!r}; focus is on {f}")
 
 
 def _press_in_place(page, key: str) -> None:
@@ -105,7 +105,7 @@ def test_deck_demo_by_keyboard_only(deck_server, chromium_browser, artifacts):  
 
         # (1) keyboard only from the top of the page: Tab to the point selector, ArrowDown
         t1 = time.monotonic()
-        result["Tab presses to the point selector"] = _tab_to(page, "cl-point-select")
+        result["Tab presses to the point selector"] = _tab_to(page, ".cl-demo .cl-point-select select")
         result["tabbing (s)"] = round(time.monotonic() - t1, 2)
         f = page.evaluate(FOCUS_JS)
         assert f["tag"] == "SELECT" and f["inDemo"], f
@@ -118,7 +118,7 @@ def test_deck_demo_by_keyboard_only(deck_server, chromium_browser, artifacts):  
         y_field = demo.locator(".cl-point-y input").first
         x_field = demo.locator(".cl-point-x input").first
         y0, x0 = float(y_field.input_value()), float(x_field.input_value())
-        result["Tab presses select -> y"] = _tab_to(page, "cl-point-y", limit=10)
+        result["Tab presses select -> y"] = _tab_to(page, ".cl-demo .cl-point-y input", limit=10)
         for _ in range(3):
             _press_in_place(page, "ArrowUp")
         expect(live).to_contain_text("P1 moved to", timeout=WAIT_MS)
@@ -128,7 +128,8 @@ def test_deck_demo_by_keyboard_only(deck_server, chromium_browser, artifacts):  
         assert float(x_field.input_value()) == x0
 
         # (3) Tab to the "right" nudge button; Space, then Enter
-        result["Tab presses y -> nudge right"] = _tab_to(page, "cl-nudge-right", limit=20)
+        result["Tab presses y -> nudge right"] = _tab_to(
+            page, ".cl-demo .cl-nudge-right button, .cl-demo button.cl-nudge-right", limit=20)
         for key in (" ", "Enter"):
             text1, x1 = live.inner_text(), float(x_field.input_value())
             _press_in_place(page, key)
@@ -140,7 +141,7 @@ def test_deck_demo_by_keyboard_only(deck_server, chromium_browser, artifacts):  
 
         # a focused slider handle keeps the arrow keys too (Shift+Tab back to the last slider)
         result["Shift+Tab presses back to a slider"] = _tab_to(
-            page, "widget-slider", limit=60, key="Shift+Tab")
+            page, ".cl-demo .widget-slider .noUi-handle", limit=60, key="Shift+Tab")
         slider = demo.locator(".widget-slider", has=page.locator(".noUi-handle:focus")).first
         readout = slider.locator(".widget-readout").first
         r0 = readout.inner_text()
