@@ -144,11 +144,17 @@ def test_deck_demo_by_keyboard_only(deck_server, chromium_browser, artifacts):  
             page, ".cl-demo .widget-slider .noUi-handle", limit=60, key="Shift+Tab")
         slider = demo.locator(".widget-slider", has=page.locator(".noUi-handle:focus")).first
         readout = slider.locator(".widget-readout").first
-        r0 = readout.inner_text()
         handle = slider.locator(".noUi-handle").first
+        report = demo.locator(".cl-report").first
+        r0, rep0 = readout.inner_text(), report.inner_text()
         at_max = handle.get_attribute("aria-valuenow") == handle.get_attribute("aria-valuemax")
-        _press_in_place(page, "ArrowLeft" if at_max else "ArrowRight")
-        expect(readout).not_to_have_text(r0, timeout=WAIT_MS)
+        # the slider's step is finer than its readout: several presses, and the report shows it;
+        # PageUp/PageDown are the deck's slide keys and must stay with the slider too
+        keys = ["ArrowLeft"] * 3 + ["PageDown"] * 2 if at_max else ["ArrowRight"] * 3 + ["PageUp"] * 2
+        for k in keys:
+            _press_in_place(page, k)
+        expect(report).not_to_have_text(rep0, timeout=WAIT_MS)
+        result["slider readout before, after"] = [r0, readout.inner_text()]
         expect(handle).to_have_attribute(
             "aria-valuetext", readout.inner_text().strip(), timeout=WAIT_MS)
         assert not log.blocked, f"requests to other hosts: {log.blocked}"
