@@ -1,8 +1,9 @@
 """Names for the sliders' handles: ipywidgets leaves each handle without an accessible name.
 
 :data:`SLIDER_NAMES_JS` runs in the front end and gives each slider handle the name of its
-label and a value text (WCAG 4.1.2); :func:`publish_slider_names` sends it from a running
-kernel.  Kept apart from :mod:`course_lib.widgets.access` so that the assembly, which calls
+label and a value text (WCAG 4.1.2), and lets Tab leave a demo's ipympl canvas, whose own key
+handler would keep the focus there (a keyboard trap, WCAG 2.1.2);
+:func:`publish_slider_names` sends it from a running kernel.  Kept apart from :mod:`course_lib.widgets.access` so that the assembly, which calls
 it, and the keyboard controls, which use the assembly, import each other in one direction.
 """
 

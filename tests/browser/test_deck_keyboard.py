@@ -21,7 +21,13 @@ With Tab, the arrow keys, Enter and Space only (no mouse, no ``element.click()``
 6. runs axe-core (WCAG 2.0/2.1 A and AA) on the deck page and inside the demo: no violation of
    the course's own inside the demo; the whole page's report is saved.
 
-Times are recorded in ``test-artifacts/a11y/deck-keyboard.json``, never asserted.
+The same steps run in plain Voilà (``voila notebooks/07_stitching_bezier_curves.ipynb``, as
+site/teaching.md prints it; Voilà's stock template, whose FontAwesome CDN requests are blocked
+here and recorded).  Step 1 found a keyboard trap (WCAG 2.1.2): ipympl's canvas is a tab stop
+whose keydown handler prevents every key, Tab included; slider_names.py now lets Tab through.
+
+Times and axe's page-wide report are recorded in ``test-artifacts/a11y/deck-keyboard.json``
+and ``voila-keyboard.json`` (never asserted).
 """
 
 from __future__ import annotations
