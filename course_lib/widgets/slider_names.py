@@ -1,8 +1,9 @@
 """Names for the sliders' handles: ipywidgets leaves each handle without an accessible name.
 
 :data:`SLIDER_NAMES_JS` runs in the front end and gives each slider handle the name of its
-label and a value text (WCAG 4.1.2); :func:`publish_slider_names` sends it from a running
-kernel.  Kept apart from :mod:`course_lib.widgets.access` so that the assembly, which calls
+label and a value text (WCAG 4.1.2), and lets Tab leave a demo's ipympl canvas, whose own key
+handler would keep the focus there (a keyboard trap, WCAG 2.1.2);
+:func:`publish_slider_names` sends it from a running kernel.  Kept apart from :mod:`course_lib.widgets.access` so that the assembly, which calls
 it, and the keyboard controls, which use the assembly, import each other in one direction.
 """
 
@@ -51,6 +52,17 @@ SLIDER_NAMES_JS = r"""
     requestAnimationFrame(() => { queued = false; fix(); });
   };
   window.__courseSliderNames = fix;
+  // WCAG 2.1.2 (no keyboard trap): ipympl's canvas is a tab stop whose keydown handler calls
+  // preventDefault on every key, Tab included, so Tab never leaves a demo's canvas (JupyterLab
+  // and Voila alike).  Tab and Shift+Tab on a course demo's canvas are stopped here, in the
+  // capture phase before ipympl sees them, and move the focus on as everywhere else.
+  document.addEventListener('keydown', (e) => {
+    const t = e.target;
+    if (e.key === 'Tab' && t && t.classList &&
+        t.classList.contains('jupyter-matplotlib-canvas-div') && t.closest('.cl-demo')) {
+      e.stopPropagation();
+    }
+  }, true);
   new MutationObserver(later).observe(document.body, {
     subtree: true, childList: true, characterData: true,
     attributes: true, attributeFilter: ['aria-valuetext'],
