@@ -153,9 +153,18 @@ def test_deck_is_the_lecture_without_answer_cells(tmp_path):
                and present.ANSWER_CELL.search("".join(c["source"]))]
     assert answers, "lecture 04 has check-your-understanding cells"
     kept = [c for c in src if c not in answers]
-    # the same cells in the same order (no second copy to maintain), minus the answers,
-    # plus the last cell that tells present.py the deck was executed
-    assert [c["id"] for c in out[:-1]] == [c["id"] for c in kept]
+    # the same cells in the same order (no second copy to maintain), minus the answers, plus
+    # after each figure its text alternative as a visible caption (the deck's img alt comes
+    # from it), plus the last cell that tells present.py the deck was executed
+    captions = [c for c in out if c["id"].endswith("-alt")]
+    assert [c["id"] for c in out[:-1] if c not in captions] == [c["id"] for c in kept]
+    with_alt = [c for c in kept if c["cell_type"] == "code"
+                and c.get("metadata", {}).get("mystnb", {}).get("image", {}).get("alt")]
+    assert [c["id"] for c in captions] == [f"{c['id']}-alt" for c in with_alt] and captions
+    for c in with_alt:
+        i = [x["id"] for x in out].index(c["id"])
+        alt = " ".join(c["metadata"]["mystnb"]["image"]["alt"].split())
+        assert "".join(out[i + 1]["source"]) == f"*Figure:* {alt}"
     assert all(not c.get("outputs") for c in out if c["cell_type"] == "code")
     assert present.READY in "".join(out[-1]["source"])
     assert any("_demo(" in "".join(c["source"]) for c in out)

@@ -37,6 +37,8 @@ import sys
 import time
 from pathlib import Path
 
+from course_lib.figure_alt import caption_markdown, cell_alt
+
 ROOT = Path(__file__).resolve().parents[1]
 NOTEBOOKS = ROOT / "notebooks"
 BUILD = ROOT / "build" / "present"
@@ -87,6 +89,10 @@ def build_deck(lecture: Path, out_dir: Path = BUILD) -> Path:
                 continue
             cell = {**cell, "outputs": [], "execution_count": None}
         cells.append(cell)
+        alt = cell_alt(cell.get("metadata")) if cell["cell_type"] == "code" else None
+        if alt:  # the figure's text alternative, visible, and its img's alt (deck template)
+            cells.append({"cell_type": "markdown", "id": f"{cell.get('id', 'fig')}-alt",
+                          "metadata": {}, "source": [caption_markdown(alt)]})
     # last, a cell without output that tells tools/present.py the deck has been executed
     cells.append({"cell_type": "code", "execution_count": None, "id": "deck-ready",
                   "metadata": {}, "outputs": [],
