@@ -201,6 +201,14 @@ _FUNCTIONS = (
 )
 
 _BY_HAND = "numpy, scipy and sympy; no function of `course_lib` that computes it"
+#: what solves hw02 q1 and q2 alike (the shape parameters of a joint, and its G-order)
+_SHAPE_PARAMETERS_AND_G_ORDER = (
+    "geometry.beta_constraints.solve_shape_parameters",
+    "geometry.continuity.joint_continuity",
+    "geometry.continuity.curve_continuity",
+    "geometry.joint_kernel._arc_length_orders",
+    "geometry.continuity._solve_betas",
+)
 
 #: Value questions whose answer a library call computes.  A value is computed in the notebook,
 #: not when the grader asks for it, so these are guarded while the notebook's ``HOMEWORK`` is
@@ -250,26 +258,8 @@ _VALUES = (
         "geometry.arc_length.hodograph_lengths",
         "geometry.arc_length.piece_lengths",
     ),
-    _ex(
-        "hw02.q1",
-        "answer_q1",
-        _BY_HAND,
-        "geometry.beta_constraints.solve_shape_parameters",
-        "geometry.continuity.joint_continuity",
-        "geometry.continuity.curve_continuity",
-        "geometry.joint_kernel._arc_length_orders",
-        "geometry.continuity._solve_betas",
-    ),
-    _ex(
-        "hw02.q2",
-        "answer_q2",
-        _BY_HAND,
-        "geometry.beta_constraints.solve_shape_parameters",
-        "geometry.continuity.joint_continuity",
-        "geometry.continuity.curve_continuity",
-        "geometry.joint_kernel._arc_length_orders",
-        "geometry.continuity._solve_betas",
-    ),
+    _ex("hw02.q1", "answer_q1", _BY_HAND, *_SHAPE_PARAMETERS_AND_G_ORDER),
+    _ex("hw02.q2", "answer_q2", _BY_HAND, *_SHAPE_PARAMETERS_AND_G_ORDER),
     _ex(
         "hw02.q4",
         "answer_q4",

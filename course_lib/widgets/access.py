@@ -27,13 +27,13 @@ leave the keys to the demo's controls while one of them has the focus.
 
 from __future__ import annotations
 
-import html
 import math
 from collections.abc import Callable
 
 import numpy as np
 
 from course_lib.widgets.assembly import selector
+from course_lib.widgets.report import live_html
 from course_lib.widgets.slider_names import (
     SLIDER_NAMES_JS,
     publish_slider_names,
@@ -282,10 +282,7 @@ class PointControls:
             if state is None and hasattr(view, "render"):
                 view.render()
         text = self.live_text()
-        value = (
-            "<div role='status' aria-live='polite' aria-atomic='true' class='cl-live-text'>"
-            f"{html.escape(text)}</div>"
-        )
+        value = live_html(text)
         if self.live.value != value:
             self.live.value = value
 

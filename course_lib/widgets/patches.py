@@ -29,7 +29,7 @@ from course_lib.constructions.surfaces import (
     tangent_plane_continuity,
 )
 from course_lib.widgets.assembly import Demo, resolve_static
-from course_lib.widgets.report import NOISE, warning_paragraph
+from course_lib.widgets.report import NOISE, live_html, warning_paragraph
 from course_lib.widgets.state import SliderSpec
 from course_lib.widgets.view import make_figure
 
@@ -226,14 +226,6 @@ class TangentPlaneView:
         self.fig.canvas.draw_idle()
 
 
-def _live_html(text: str) -> str:
-    """The live region's content (as :class:`~course_lib.widgets.access.PointControls`)."""
-    return (
-        "<div role='status' aria-live='polite' aria-atomic='true' class='cl-live-text'>"
-        f"{html.escape(text)}</div>"
-    )
-
-
 def tangent_plane_demo(
     alpha: float = 1.2,
     beta0: float = 0.4,
@@ -281,7 +273,7 @@ def tangent_plane_demo(
     demo.controls["live"] = live
 
     def say(st) -> None:
-        value = _live_html(st.verdict())
+        value = live_html(st.verdict())
         if live.value != value:
             live.value = value
 

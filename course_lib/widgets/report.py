@@ -27,6 +27,15 @@ def warning_span(text: str) -> str:
     return f"<span style='{WARNING_STYLE}'>⚠ {html.escape(text)}</span>"
 
 
+def live_html(text: str) -> str:
+    """The content of a demo's live region (class ``cl-live-text``): ``role="status"``, read
+    out whole by screen readers when it changes; text escaped."""
+    return (
+        "<div role='status' aria-live='polite' aria-atomic='true' class='cl-live-text'>"
+        f"{html.escape(text)}</div>"
+    )
+
+
 #: The one-line explanation shown above the details.
 DETAIL_NOTE = (
     "β_k is solved order by order; above the joint's G-order the k-th Beta-constraint does "
