@@ -389,6 +389,15 @@ def as_expression_values(answer: object, symbols, points, name: str = "your answ
     return value
 
 
+def expression_digest(answer: object, qid: str, symbols, points, name: str) -> str:
+    """The :func:`values_digest` of a symbolic answer at ``points``, after the checks every
+    symbolic answer gets (only ``symbols`` free, finite values) -- what a check compares with
+    its stored digests."""
+    free, values = as_expression_values(answer, symbols, points, name)
+    answers.expression_matches(free, values, values, symbols, name)  # symbols, finite
+    return values_digest(qid, values)
+
+
 def unit(v: np.ndarray) -> np.ndarray:
     return v / np.linalg.norm(v)
 

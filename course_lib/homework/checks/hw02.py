@@ -40,15 +40,14 @@ from course_lib.homework import answers, variants
 from course_lib.homework.checks._core import (
     answer_hash,
     as_choice,
-    as_expression_values,
     as_number,
     as_vector,
     call_answer,
     close,
+    expression_digest,
     fail,
     ok,
     register,
-    values_digest,
 )
 
 # ============================================================ the question data: every student's variant
@@ -251,9 +250,7 @@ _Q4_TRANSCRIBED = "0301e3bab454caddd521999abfab9435"
 
 @register("hw02.q4", "answer_q4", "coefficient of q''(1) in the fourth Beta-constraint (sympy)")
 def _q4(answer):
-    free, values = as_expression_values(answer, _Q4_SYMBOLS, _Q4_POINTS, "answer_q4")
-    answers.expression_matches(free, values, values, _Q4_SYMBOLS, "answer_q4")  # symbols, finite
-    digest = values_digest("hw02.q4", values)
+    digest = expression_digest(answer, "hw02.q4", _Q4_SYMBOLS, _Q4_POINTS, "answer_q4")
     if digest == _Q4_RIGHT:
         return ok("correct -- and it is what the chain rule gives, not what seed 001 eq. (2.7) prints.")
     if digest == _Q4_TRANSCRIBED:
