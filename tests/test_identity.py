@@ -119,7 +119,7 @@ def test_a_canvas_semester_is_identified_and_flagged(tmp_path):
     ann = items["1003"]
     assert ann.variant == code["1003"]  # her own data, whatever her notebook says
     assert {identity.WRONG_CODE, identity.SHARED_CODE, identity.ID_DIFFERS} <= set(ann.who.flags)
-    assert any("code of roster student 1001" in n for n in ann.who.private)  # the instructor's
+    assert "code of roster student 1001" in ann.who.private[identity.WRONG_CODE]  # the instructor's
     assert not any("1001" in n for n in ann.who.notes)  # her feedback names no other student
     assert ann.found.manifest["tampered"] and ann.found.lms_late
 

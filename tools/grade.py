@@ -203,14 +203,14 @@ def _variant_flags(items: list[Item], roster, homework: str, secret: bytes) -> N
                 "the notebook's VARIANT is not the code you were given: the data questions "
                 "were graded on your own data"
             )
-            item.who.private.append(
+            item.who.private[identity.WRONG_CODE] = (
                 f"its VARIANT is the code of roster student {whose}"
                 if whose else "its VARIANT is no roster student's code"
             )
         if len(users.get(used, [])) > 1:
             item.who.flags.append(identity.SHARED_CODE)
             item.who.notes.append("the same VARIANT is in another student's notebook")
-            item.who.private.append(
+            item.who.private[identity.SHARED_CODE] = (
                 "the same VARIANT is in the notebooks of " + ", ".join(sorted(users[used]))
             )
 
@@ -408,7 +408,7 @@ def _finish_result(r: Result, item: Item, args, late) -> Result:
             flags.append(identity.LATE)
     r.run_notes = [n for n in r.run_notes if not n.startswith("the submission's manifest names")]
     r.run_notes[:0] = notes
-    r.private_notes = list(dict.fromkeys(who.private))
+    r.private_notes = dict(who.private)
     seen = []
     for f in flags:
         if f not in seen:

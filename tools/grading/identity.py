@@ -230,8 +230,9 @@ class Identity:
     how: str  # "lms", "name", "manifest"
     notes: list[str] = field(default_factory=list)  # for the student's feedback
     flags: list[str] = field(default_factory=list)
-    #: for the instructor only (summary.md, results.json): sentences that name another student
-    private: list[str] = field(default_factory=list)
+    #: for the instructor only (summary.md, results.json): per flag, the sentence that names
+    #: another student (whose code, whose manifest)
+    private: dict[str, str] = field(default_factory=dict)
 
 
 def identify(found: Found, index: RosterIndex | None) -> Identity:
@@ -300,7 +301,7 @@ def _compare_manifest(ident: Identity, index: RosterIndex, manifest_id: str) -> 
             f"the submit() manifest names another roster student, but the {source} says "
             f"{entry.id}: graded as {entry.id}"
         )
-        ident.private.append(f"the manifest names roster student {other.id}")
+        ident.private[ID_DIFFERS] = f"the manifest names roster student {other.id}"
     elif other is None:  # another form of id (an e-mail, a login): noted, not flagged
         ident.notes.append(
             f"the submit() manifest names student {manifest_id!r}; the {source} says {entry.id}"

@@ -467,23 +467,14 @@ def flags_of(r) -> list[str]:
     return [p.strip() for p in r.status.split(";")[1:]]
 
 
-#: flags whose details name another student: given in summary.md only, never in the feedback
-_PRIVATE = {
-    "manifest id differs": "the manifest names",
-    "wrong variant code": "its VARIANT is",
-    "shared variant code": "the same VARIANT",
-}
-
-
 def _why(r, flag: str) -> str:
     """The details after a flagged name: the scan's reasons (tools/grading/tamper.py), or whose
     code or manifest it is (the instructor's notes; the student's feedback does not name them)."""
     if flag == "reaches into the grader":
         details = getattr(r, "review", None) or []
     else:
-        start = _PRIVATE.get(flag)
-        notes = getattr(r, "private_notes", None) or []
-        details = [n for n in notes if start and n.startswith(start)]
+        private = (getattr(r, "private_notes", None) or {}).get(flag)
+        details = [private] if private else []
     return f" ({'; '.join(details)})" if details else ""
 
 

@@ -120,9 +120,9 @@ class Result:
     refused: str = ""
     #: why the notebook's code was flagged for the instructor (tools/grading/tamper.py)
     review: list[str] = field(default_factory=list)
-    #: for the instructor only (summary.md, results.json), never the feedback: sentences that
-    #: name another student (whose variant code, whose manifest)
-    private_notes: list[str] = field(default_factory=list)
+    #: for the instructor only (summary.md, results.json), never the feedback: per flag, the
+    #: sentence that names another student (whose variant code, whose manifest)
+    private_notes: dict[str, str] = field(default_factory=dict)
 
     def right(self, q: str, points: float) -> bool:
         """Did the answer to ``q`` earn full credit (also for a feedback-only question)?"""
