@@ -72,8 +72,9 @@ submit: install
 	$(BIN)/python -m course_lib.homework.submit "$(HW)" --student "$(STUDENT)"
 
 # make release: the student edition in dist/student-edition/ and dist/student-edition.zip
+#   (SECRET=course_secret.txt ROSTER=roster.csv: with answer keys for every student's data)
 release: install
-	$(BIN)/python tools/release.py --out dist/student-edition
+	$(BIN)/python tools/release.py --out dist/student-edition $(if $(SECRET),--secret-file "$(SECRET)") $(if $(ROSTER),--roster "$(ROSTER)")
 
 # The website: lectures and blank homework executed (cached in build/site-cache/), demos as
 # static figures, MathJax bundled; nothing is loaded from the network.  See site/teaching.md.

@@ -36,13 +36,28 @@ def load(name: str, path: Path):
 
 
 
+#: the students of :class:`VariantHomework` (their codes under :data:`SECRET`)
+STUDENTS = [f"student-{i:04d}" for i in range(1000)]
+#: scrypt's cost in the tests' answer keys: the digests of an edition (2**13) cost ~30 ms each
+TEST_KEY_COST = 16
+
+
+@functools.cache
+def keys_of_the_test_students():
+    """The answer keys a release with :data:`SECRET` and a roster of :data:`STUDENTS` writes
+    (``tools/answer_keys.py``), cheaper to hash: what in-process checks of other variants use."""
+    from tools import answer_keys as keys_tool
+
+    return keys_tool.build(secret=SECRET, students=STUDENTS, cost=TEST_KEY_COST)
+
+
 class VariantHomework:
     def __init__(self, hw: str) -> None:
         self.hw = hw
         self.hidden = load(
             f"hidden_{hw}_variants", ROOT / "solutions" / "hidden_tests" / f"{hw}.py"
         )
-        self.codes = [variants.code_for(SECRET, hw, f"student-{i:04d}") for i in range(1000)]
+        self.codes = [variants.code_for(SECRET, hw, student) for student in STUDENTS]
 
     def grade(self, q: str, namespace: dict, data: dict) -> tuple[float, str]:
         """One hidden test on ``data``, the answers read from ``namespace`` as the grader would."""

@@ -18,6 +18,7 @@ import inspect
 import json
 import threading
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -28,6 +29,8 @@ from course_lib.homework.checks import HOMEWORKS, check, questions, registry
 from tools.grading.protocol import LocalStudent, run_question
 
 ROOT = Path(__file__).resolve().parents[1]
+#: the tests' students' codes (the session's answer keys know their data: conftest.py)
+HOME_CODES = {hw: VariantHomework(hw).codes for hw in ("hw01", "hw02")}
 HIDDEN = {
     hw: load(f"hidden_{hw}_own_work", ROOT / "solutions" / "hidden_tests" / f"{hw}.py")
     for hw in HOMEWORKS
@@ -489,15 +492,75 @@ def test_a_tracer_around_the_check_recovers_no_expected_value(hw, qid, kind):
         assert not any(abs(x - s) <= 1e-9 * max(1.0, abs(x)) for s in spy.seen), (qid, x)
 
 
-def test_the_tracer_test_can_fail(monkeypatch):
-    """Without the refusal the same tracer finds hw01.q7's arc length among the check's locals."""
+KEYED = [
+    (hw, f"{hw}.{q}")
+    for hw in HOMEWORKS
+    for q in getattr(importlib.import_module(f"course_lib.homework.checks.{hw}"), "ANSWER_KEYS", {})
+]
+
+
+def test_the_keyed_questions_are_the_value_questions_a_check_could_only_compute():
+    """hw01 q1, q4, q5, q7 and hw02 q5: the checks that used to compute their expected value."""
+    assert [qid for _, qid in KEYED] == ["hw01.q1", "hw01.q4", "hw01.q5", "hw01.q7", "hw02.q5"]
+
+
+@pytest.mark.parametrize("kind", ["settrace", "setprofile"])
+@pytest.mark.parametrize("answer", ["wrong", "right"])
+@pytest.mark.parametrize("hw, qid", KEYED)
+def test_a_spy_finds_no_expected_value_even_where_the_check_lets_it_run(
+    hw, qid, answer, kind, monkeypatch
+):
+    """With the refusal of tracers switched off (as a student can, in their own kernel), a spy
+    on every frame of an answer-keyed check sees no expected value: the check holds digests."""
     import sys
 
     monkeypatch.setattr("course_lib.homework.checks._core._gettrace", lambda: None)
+    monkeypatch.setattr("course_lib.homework.checks._core._getprofile", lambda: None)
+    data = variants.data(hw, HOME_CODES[hw][7])  # another student's data: keys of the test roster
+    q = qid.split(".")[1]
+    # held in an object the spy does not open (it sees this frame's locals too)
+    kept = SimpleNamespace(right=dict(HIDDEN[hw].key_values(data)[q])["right"])
+    value = np.full(np.shape(kept.right), 0.123) if answer == "wrong" else kept.right
+    if qid == "hw01.q1" and answer == "wrong":
+        value = np.array([0.6, 0.8])  # a unit vector: the check gets as far as the key
+    spy = Spy()
+    install = sys.settrace if kind == "settrace" else sys.setprofile
+    install(spy)
+    try:
+        verdict = check(qid, value)
+    finally:
+        install(None)
+        variants.data(hw, variants.DEFAULT)
+    assert verdict.passed == (answer == "right"), verdict
+    if answer == "right":
+        return  # the student's own value is the expected one: nothing to find
+    expected = [float(x) for x in np.atleast_1d(kept.right)]
+    given: list[float] = []
+    _numbers(data, given)
+    secret = [x for x in expected if not any(abs(x - g) <= 1e-9 * max(1, abs(x)) for g in given)]
+    assert secret, "the right value is made of the question's own numbers: nothing to hide"
+    for x in secret:
+        assert not any(abs(x - s) <= 1e-6 * max(1.0, abs(x)) for s in spy.seen), (qid, x)
+
+
+def test_the_spy_test_can_fail(monkeypatch):
+    """The same spy finds the arc length in a check that computes it (hw01.q7 as it was)."""
+    import math
+    import sys
+
+    from course_lib.homework.checks import _core
+
+    def computing_check(answer):  # the former check: quadrature of the speed, in place
+        d = variants.current("hw01")["q7"]
+        x, w = np.polynomial.legendre.leggauss(60)
+        expected = float(np.sum(w * np.hypot(1.0, d["k"] * (x + 1) * d["b"])) * d["b"] / 2)
+        return math.isclose(answer, expected, rel_tol=1e-6), ""
+
+    monkeypatch.setattr(_core, "_gettrace", lambda: None)
     spy = Spy()
     sys.settrace(spy)
     try:
-        check("hw01.q7", 0.123)
+        _core.run_validate("hw01.q7", computing_check, 0.123)
     finally:
         sys.settrace(None)
     (x,) = _expected_numbers("hw01", "hw01.q7")

@@ -3,6 +3,8 @@
 Usage::
 
     python tools/release.py --out dist/student-edition     # also writes dist/student-edition.zip
+    python tools/release.py --out dist/student-edition --secret-file course_secret.txt --roster roster.csv
+        # the same, with answer keys for every student's data (tools/answer_keys.py)
 
 The edition holds the lecture notebooks (``notebooks/``), the blank homework (``exercises/``),
 the installable ``course_lib`` package, ``pyproject.toml``, ``constraints.txt``,
@@ -227,10 +229,12 @@ def _student_environment(text: str) -> str:
     return "\n".join(keep) + "\n"
 
 
-def build(out: Path) -> Path:
+def build(out: Path, keys=None) -> Path:
     """Write the edition to ``out`` (replacing it) and ``out``.zip; return the zip's path.
 
-    Refuses (``SystemExit``) an edition with a TODO or a scaffold placeholder left in it."""
+    ``keys`` (:class:`course_lib.homework.answer_keys.AnswerKeys`) replace the package's answer
+    keys, which hold the default data's only.  Refuses (``SystemExit``) an edition with a TODO or
+    a scaffold placeholder left in it."""
     left = unfinished(edition_files())
     if left:
         raise SystemExit(
@@ -255,6 +259,8 @@ def build(out: Path) -> Path:
             dst.write_text(_student_welcome(src.read_text(encoding="utf-8")), encoding="utf-8")
         else:
             shutil.copyfile(src, dst)
+    if keys is not None:
+        keys.write(out / "course_lib" / "homework" / "answer_keys.json")
     (out / "README.md").write_text(STUDENT_README, encoding="utf-8")
     (out / "Makefile").write_text(STUDENT_MAKEFILE, encoding="utf-8")
     archive = out.with_suffix(".zip")
@@ -265,13 +271,43 @@ def build(out: Path) -> Path:
     return archive
 
 
+def _keyed() -> str:
+    from tools.answer_keys import keyed_questions
+
+    return "; ".join(f"{hw} {', '.join(quanta)}" for hw, quanta in keyed_questions().items())
+
+
 def main(argv: list[str] | None = None) -> int:
     p = argparse.ArgumentParser(description="Build the student edition of the course.")
     p.add_argument("--out", type=Path, default=ROOT / "dist" / "student-edition")
+    p.add_argument("--secret-file", type=Path,
+                   help="the course secret: with --roster, the edition's checks get answer keys "
+                        "for every student's data (tools/answer_keys.py)")
+    p.add_argument("--roster", type=Path, help="the roster the students' codes are made from")
     args = p.parse_args(argv)
-    archive = build(args.out)
+    if (args.secret_file is None) != (args.roster is None):
+        raise SystemExit("give --secret-file and --roster together (SECRET= and ROSTER= of make release)")
+    keys = None
+    if args.roster is not None:  # before anything is written: a bad roster stops the build
+        from tools import answer_keys as keys_tool
+        from tools.grading import reports
+        from tools.variant import read_secret
+
+        secret = read_secret(args.secret_file)
+        try:
+            students = [e.id for e in reports.read_roster(args.roster).values()]
+        except OSError as exc:
+            raise SystemExit(f"--roster {args.roster}: {exc.strerror}") from None
+        keys = keys_tool.build(secret=secret, students=students)
+    if keys is not None:
+        build(args.out, keys=keys)
+        told = f"answer keys for the default data and {len(students)} students"
+    else:
+        build(args.out)
+        told = (f"answer keys for the default data only: the checks of {_keyed()} say "
+                "\"value not checked here\" to a student with a code; give SECRET= and ROSTER=")
     n = sum(1 for f in args.out.rglob("*") if f.is_file())
-    print(f"wrote {args.out} ({n} files) and {archive}")
+    print(f"wrote {args.out} ({n} files) and {args.out.with_suffix('.zip')}, with {told}")
     return 0
 
 

@@ -295,10 +295,13 @@ def _checked(cell, homework: str) -> str:
     parts = [f"{passed} of {len(verdicts)} checks pass"]
     todo = [q for q, status in verdicts if status == "not answered"]
     wrong = [q for q, status in verdicts if status == "failed"]
+    unchecked = [q for q, status in verdicts if status == "not checked here"]
     if todo:
         parts.append(", ".join(todo) + " not answered yet")
     if wrong:
         parts.append(", ".join(wrong) + " ✗")
+    if unchecked:
+        parts.append(", ".join(unchecked) + " ? (no answer key for your data here: the grader checks them)")
     variant = data.get("variant")
     if data.get("has_variants") and isinstance(variant, str) and not variant.strip():
         parts.append(

@@ -106,6 +106,40 @@ def answers_for(data):
     }
 
 
+def key_values(data):
+    """The values the edition's answer keys recognise, per keyed question: the right one and
+    the usual mistakes, each with the tag its check explains (``tools/answer_keys.py`` hashes
+    them; ``course_lib.homework.checks.hw01`` never sees a value)."""
+    T = _unit_tangent(data["q1"])
+    kappa = _kappa(data["q4"])
+    k, u = data["q4"]["k"], data["q4"]["u"]
+    speed = math.hypot(1.0, 2 * k * u)  # ‖q'(u)‖ = ‖(1, 2ku)‖
+    d5 = data["q5"]
+    k5, s, c = d5["k"], d5["s"], d5["f"]
+    f = c[0] + c[1] * s + c[2] * s * s
+    f1, f2 = c[1] + 2 * c[2] * s, 2 * c[2]
+    q2 = np.array([0.0, 2 * k5])  # q'' of (u, k u²) at any u
+    d7 = data["q7"]
+    return {
+        "q1": [("right", T), ("backwards", -T), ("swapped", T[::-1])],
+        "q4": [
+            ("right", kappa),
+            ("sign-left" if kappa > 0 else "sign-right", -kappa),
+            ("radius", 1 / kappa),
+            ("radius", -1 / kappa),
+            ("power", kappa * speed),  # det / ‖q'‖² instead of ‖q'‖³
+        ],
+        "q5": [
+            ("right", _second_derivative(d5)),
+            ("missing-term", q2 * f1 * f1),
+            ("at-s", q2 * f1 * f1 + np.array([1.0, 2 * k5 * s]) * f2),  # q' at s, not at f(s)
+            ("f1-not-squared", q2 * f1 + np.array([1.0, 2 * k5 * f]) * f2),
+            ("original", q2),
+        ],
+        "q7": [("right", _arc_length(d7)), ("chord", math.hypot(d7["b"], d7["k"] * d7["b"] ** 2))],
+    }
+
+
 def _composite_a(s):
     """q(x) = (sin x, x³), f(s) = s² + s/2; the derivatives of q(f(s)) differentiated by hand."""
     g, g1, g2 = s * s + s / 2, 2 * s + 0.5, 2.0

@@ -55,6 +55,21 @@ def _r2(d):
     return d["beta1"] ** 2 * _vec(d["q2"]) + d["beta2"] * _vec(d["q1"])
 
 
+def key_values(data):
+    """The values the edition's answer key of q5 recognises: r''(0) and the usual mistakes,
+    each with the tag its check explains (``tools/answer_keys.py`` hashes them)."""
+    d = data["q5"]
+    b1, b2, q1, q2 = d["beta1"], d["beta2"], _vec(d["q1"]), _vec(d["q2"])
+    return {
+        "q5": [
+            ("right", _r2(d)),
+            ("beta1-not-squared", b1 * q2 + b2 * q1),
+            ("mixed-up", b1**2 * q2 + b2 * q2),
+            ("mixed-up", b1**2 * q1 + b2 * q2),
+        ]
+    }
+
+
 def _right_letter_q6(d):
     return "".join(x for x, label in sorted(d["options"].items()) if RIGHT_Q6 in label)
 

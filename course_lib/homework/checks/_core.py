@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from course_lib.homework import answers, own_work
+from course_lib.homework import answer_keys, answers, own_work
 
 __all__ = [
     "AnswerProblem",
@@ -32,6 +32,7 @@ __all__ = [
     "call_answer",
     "fail",
     "is_unanswered",
+    "key_tag",
     "ok",
     "refuse_if_traced",
     "register",
@@ -43,13 +44,16 @@ __all__ = [
 FUNCTION_TIME_LIMIT = 5.0
 
 PASS, FAIL, UNANSWERED = "passed", "failed", "not answered"
+#: a value whose form is right but which this copy of the course has no answer key for
+UNCHECKED = "not checked here"
 
 
 @dataclass(frozen=True)
 class Verdict:
     """The outcome of one check: ``passed`` and a message in the terms of the course.
 
-    ``status`` is ``"passed"``, ``"failed"`` or ``"not answered"``.  A verdict is truthy
+    ``status`` is ``"passed"``, ``"failed"``, ``"not answered"`` or ``"not checked here"`` (a
+    value the edition holds no answer key for: only the grader checks it).  A verdict is truthy
     exactly when it passed, so ``assert check(...)`` works in solution notebooks.
     """
 
@@ -66,11 +70,12 @@ class Verdict:
         return self.status != UNANSWERED
 
     def _symbol(self) -> str:
-        return {PASS: "✓", UNANSWERED: "…"}.get(self.status, "✗")
+        return {PASS: "✓", UNANSWERED: "…", UNCHECKED: "?"}.get(self.status, "✗")
 
     def _words(self) -> str:
         """What the symbol means, in words (a screen reader may skip "✗"; WCAG 1.1.1)."""
-        return "" if self.status in (PASS, UNANSWERED) else " (not right yet)"
+        words = {PASS: "", UNANSWERED: "", UNCHECKED: " (value not checked here)"}
+        return words.get(self.status, " (not right yet)")
 
     def __str__(self) -> str:
         return f"{self._symbol()} {self.question}{self._words()}: {self.message}"
@@ -79,8 +84,8 @@ class Verdict:
         return str(self)
 
     def _repr_html_(self) -> str:
-        colour = {PASS: "#1b7f3b", UNANSWERED: "#8a6d00"}.get(self.status, "#b00020")
-        back = {PASS: "#e8f5ec", UNANSWERED: "#fff8e1"}.get(self.status, "#fdecee")
+        colour = {PASS: "#1b7f3b", UNANSWERED: "#8a6d00", UNCHECKED: "#1f4e8c"}.get(self.status, "#b00020")
+        back = {PASS: "#e8f5ec", UNANSWERED: "#fff8e1", UNCHECKED: "#eaf1fb"}.get(self.status, "#fdecee")
         return (
             f'<div class="cl-verdict cl-verdict-{self.status.replace(" ", "-")}" '
             f'style="border-left:4px solid {colour};background:{back};padding:4px 8px;'
@@ -316,11 +321,35 @@ def answer_hash(answer: object, salt: str = "") -> str:
     return hashlib.sha256(text.encode()).hexdigest()[:16]
 
 
+class Unchecked(Exception):
+    """Raised by :func:`key_tag`: the edition has no answer key for this question's data."""
+
+
+#: what a student reads when their value cannot be checked here (no key for their data)
+NO_KEY_MESSAGE = (
+    "the form of your answer is right, but this copy of the course holds no answer key for your "
+    "data, so only the grader checks the value. Check that VARIANT is the code your instructor "
+    "gave you; if it is, ask them for the student edition made with the class list."
+)
+
+
+def key_tag(qid: str, quantum: float, data: Mapping, value: object) -> str:
+    """The answer key's tag of ``value`` for the question's ``data``: ``"right"``, the tag of a
+    known mistake, or ``""`` (none of them); :class:`Unchecked` if there is no key
+    (:mod:`course_lib.homework.answer_keys`: the check compares digests, never values)."""
+    tag = answer_keys.keys().lookup(qid, quantum, data, value)
+    if tag == answer_keys.NO_KEY:
+        raise Unchecked(NO_KEY_MESSAGE)
+    return tag
+
+
 def run_validate(qid: str, validate: Callable[[object], tuple[bool, str]], answer: object) -> Verdict:
     """Apply ``validate`` to ``answer`` and wrap the outcome in a :class:`Verdict`; never raises."""
     try:
         refuse_if_traced()
         passed, message = validate(answer)
+    except Unchecked as exc:
+        return Verdict(qid, False, str(exc), UNCHECKED)
     except AnswerProblem as p:
         status = UNANSWERED if p.unanswered else FAIL
         return Verdict(qid, False, p.message, status)
