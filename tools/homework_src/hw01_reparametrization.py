@@ -19,6 +19,9 @@
 # - ✓ your answer has the properties it must have;
 # - ✗ what is wrong, in the terms of the course;
 # - … not answered yet.
+# - ? (q1, q4, q5, q7) the form is right, but this copy of the course has no answer key for
+#   your data: only the grader checks the value. Check `VARIANT`; if it is right, tell your
+#   instructor.
 #
 # The checks are feedback, not the grade: the grade comes from the grader's own tests, on your
 # data and, for the functions, on other data too, so write code that works in general. Keep
@@ -32,6 +35,8 @@
 # use): while your function is checked or graded, those library functions raise an error --
 # "… is the exercise of hw01.q2: write it yourself" -- and the question earns 0 points. The
 # checks do not hand out answers either: they say ✓ or ✗, and what kind of case went wrong.
+# The checks of q1, q4, q5 and q7 do not even know the value: they compare a fingerprint of
+# your answer with one your instructor made from the grader's tests.
 #
 # **Your own data.** Every student gets their own numbers: paste the *variant code* your
 # instructor gave you into `VARIANT` below. The cells marked "your data" print the data of each

@@ -20,6 +20,8 @@
 #
 # **How to work.** Replace each `...` by your answer (or write the body of the function), run the
 # cell, then run the **check cell** below it: ✓ right, ✗ what is wrong, … not answered yet.
+# On q5, ? means the form is right but this copy of the course has no answer key for your data:
+# only the grader checks the value (check `VARIANT`; if it is your code, tell your instructor).
 # The checks are feedback; the grade comes from the grader's own tests, on your data and, for
 # the functions, on other data too. Keep the names, do not delete cells, and before you hand in
 # run *Kernel → Restart Kernel and Run All Cells*.
@@ -31,6 +33,8 @@
 # use): while your function is checked or graded, those library functions raise an error --
 # "… is the exercise of hw02.q3: write it yourself" -- and the question earns 0 points. The
 # checks do not hand out answers either: they say ✓ or ✗, and what kind of case went wrong.
+# The check of q5 does not even know the value: it compares a fingerprint of your answer with
+# one your instructor made from the grader's tests.
 #
 # **Your own data.** Every student gets their own numbers: paste the *variant code* your
 # instructor gave you into `VARIANT` below. The cells marked "your data" print the data of each
