@@ -57,7 +57,8 @@ then `jupyter lab notebooks/00_welcome.ipynb`. The same `environment.yml` works 
 Work through `notebooks/` in order (`00_welcome` first). After each lecture comes its homework in
 `exercises/`: replace every `...` (or write the body of the function), run the cell, then the
 **check cell** under it. It answers ✓, or ✗ with what is wrong, or "not answered yet"; the last
-cell checks everything at once. The checks are feedback: your grade comes from the instructor's
+cell checks everything at once. A "?" (value not checked here) means this copy has no answer key
+for your data: check that `VARIANT` is your code, and if it is, tell your instructor. The checks are feedback: your grade comes from the instructor's
 grader, which runs its own tests on other data, so write code that works in general and keep the
 answer names.
 
