@@ -64,19 +64,6 @@ def _hypothesis_profiles() -> None:
 _hypothesis_profiles()
 
 
-@pytest.fixture(scope="session", autouse=True)
-def answer_keys_of_the_test_students():
-    """The checks in this process know the answers of the tests' 1,000 students per homework
-    (as an edition made with their roster does: ``make release SECRET=... ROSTER=...``), hashed
-    cheaply; the package's own key file is tested in ``tests/test_answer_keys.py``."""
-    from course_lib.homework import answer_keys
-    from tests._homework_support import keys_of_the_test_students
-
-    answer_keys.use(keys_of_the_test_students())
-    yield
-    answer_keys.use(None)
-
-
 def png_width(data: str | bytes, metadata: dict | None = None) -> int:
     """Displayed width in pixels of a base64 PNG output: ``metadata["width"]`` when the
     kernel sent one (retina figures are shown at half their pixel width), else the width
