@@ -71,7 +71,8 @@ def do_homework(edition: Path, home: Path, code: str, *, answered: bool = True) 
         theirs = [c for c in solution.cells if c.cell_type == "code"]
         assert len(mine) == len(theirs)
         for cell, answer in zip(mine, theirs, strict=True):
-            cell.source = answer.source
+            if "..." in cell.source or "NotImplementedError" in cell.source:  # an answer cell
+                cell.source = answer.source  # (the check cells stay the edition's)
     (cell,) = [c for c in nb.cells if c.cell_type == "code" and 'VARIANT = ""' in c.source]
     cell.source = cell.source.replace('VARIANT = ""', f'VARIANT = "{code}"', 1)
     nbformat.write(nb, home / "exercises" / NAME)
@@ -115,8 +116,9 @@ def semester(tmp_path_factory):
     # what the instructor tells each student: the code and the id to hand in with
     assert rows[0]["tell_the_student"].startswith(f"{HW}: your variant code is {codes['1001']}")
     assert "STUDENT=1001" in rows[0]["tell_the_student"]
-    # the student edition, as make release builds it
-    run(sys.executable, "tools/release.py", "--out", str(base / "dist" / "student-edition"))
+    # the student edition, as make release SECRET=... ROSTER=... builds it (site/semester.md)
+    run(sys.executable, "tools/release.py", "--out", str(base / "dist" / "student-edition"),
+        "--secret-file", str(course / "course_secret.txt"), "--roster", str(course / "gradebook.csv"))  # fmt: skip
     edition = base / "dist" / "student-edition"
     told = "the id your instructor gave you with your variant code"
     assert told in " ".join((edition / "README.md").read_text(encoding="utf-8").split())
@@ -125,15 +127,25 @@ def semester(tmp_path_factory):
 
     students = base / "students"
     handed = {}
-    handed["1001"] = hand_in_from_the_notebook(do_homework(edition, students / "jane", codes["1001"]), "1001")
-    handed["1004"] = submit(do_homework(edition, students / "tom", codes["1004"]), student="1004").path
-    blank = submit(do_homework(edition, students / "ann-1", codes["1003"], answered=False), student="1003")
-    handed["1003"] = submit(do_homework(edition, students / "ann-2", codes["1003"]), student="1003").path
-    handed["1005"] = submit(do_homework(edition, students / "sam", codes["1001"]), student="1005").path
-    handed["7777"] = submit(do_homework(edition, students / "x", codes["1001"]), student="7777").path
-    # the deadline passes; Rick hands in after it (Canvas marks his upload LATE)
-    deadline = datetime.now(timezone.utc).replace(microsecond=0) + timedelta(seconds=1)
-    handed["1002"] = submit(do_homework(edition, students / "rick", codes["1002"]), student="1002").path
+    # the students' kernels import the edition's course_lib (its answer keys), as its own
+    # editable install would give them
+    old_path = os.environ.get("PYTHONPATH")
+    os.environ["PYTHONPATH"] = str(edition)
+    try:
+        handed["1001"] = hand_in_from_the_notebook(do_homework(edition, students / "jane", codes["1001"]), "1001")
+        handed["1004"] = submit(do_homework(edition, students / "tom", codes["1004"]), student="1004").path
+        blank = submit(do_homework(edition, students / "ann-1", codes["1003"], answered=False), student="1003")
+        handed["1003"] = submit(do_homework(edition, students / "ann-2", codes["1003"]), student="1003").path
+        handed["1005"] = submit(do_homework(edition, students / "sam", codes["1001"]), student="1005").path
+        handed["7777"] = submit(do_homework(edition, students / "x", codes["1001"]), student="7777").path
+        # the deadline passes; Rick hands in after it (Canvas marks his upload LATE)
+        deadline = datetime.now(timezone.utc).replace(microsecond=0) + timedelta(seconds=1)
+        handed["1002"] = submit(do_homework(edition, students / "rick", codes["1002"]), student="1002").path
+    finally:
+        if old_path is None:
+            os.environ.pop("PYTHONPATH", None)
+        else:
+            os.environ["PYTHONPATH"] = old_path
     # Tom opens his submission and saves it again with a changed cell
     tom = nbformat.read(handed["1004"], as_version=4)
     tom.cells[0].source += "\n\n(opened again after submit)"
