@@ -52,6 +52,19 @@ def keyed_questions() -> dict[str, dict[str, float]]:
     return out
 
 
+def for_data(homework: str, data: dict, key_values, cost: int = 16) -> answer_keys.AnswerKeys:
+    """The keys of one student's ``data`` of ``homework`` (``key_values`` of its hidden tests):
+    what the grader shows the submission's kernel.  Cheap digests: the file never leaves the
+    grader's sandbox, whose grade does not depend on it."""
+    quanta = keyed_questions().get(homework, {})
+    values = key_values(data) if quanta else {}
+    keys = dict(
+        answer_keys.entry(f"{homework}.{q}", quantum, data[q], values[q], cost=cost)
+        for q, quantum in quanta.items()
+    )
+    return answer_keys.AnswerKeys({"format": answer_keys.FORMAT, "cost": cost, "keys": keys})
+
+
 def build(
     codes: Iterable[str] = (),
     *,

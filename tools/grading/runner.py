@@ -21,6 +21,7 @@ import time
 import traceback
 import types
 import uuid
+from collections.abc import Callable
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
@@ -28,6 +29,7 @@ import nbformat
 
 from course_lib.homework import own_work
 from course_lib.homework.submit import describe_cell, error_text, manifest_of
+from tools import answer_keys as keys_tool
 
 from . import jobroot, protocol, sandbox, tamper
 
@@ -61,6 +63,7 @@ class HiddenTests:
     functions: dict
     source: str = ""
     variants: bool = False  # the module sets VARIANTS = True: tests are qN(student, data)
+    key_values: Callable | None = None  # key_values(data): the values of the answer keys
 
     @classmethod
     def load(cls, path: Path) -> HiddenTests:
@@ -88,7 +91,8 @@ class HiddenTests:
         functions = {q: ns[q] for q in points}
         homework = str(ns.get("HOMEWORK", Path(path).stem))
         variants = bool(ns.get("VARIANTS", False))
-        return cls(Path(path), homework, dict(points), functions, source, variants)
+        key_values = ns.get("key_values") if callable(ns.get("key_values")) else None
+        return cls(Path(path), homework, dict(points), functions, source, variants, key_values)
 
     @property
     def max_points(self) -> float:
@@ -823,6 +827,10 @@ def grade_notebook(
     session.homework = tests.homework
     # the sandbox shows it read-only: the homework's value guards hold in every process there
     sandbox.grader_state_path(job).write_text(own_work.grader_state_text(tests.homework))
+    if variant_data is not None and tests.key_values is not None:  # the checks work as at home
+        keys_tool.for_data(tests.homework, variant_data, tests.key_values).write(
+            sandbox.grader_keys_path(job)
+        )
     try:
         session.responses = jobroot.response_folder(job, 4 * protocol.MAX_RESPONSE_BYTES, mounted)
         session.mounted = mounted
@@ -849,6 +857,7 @@ def grade_notebook(
         _note_disk(job, mounted, opts.limits.disk_bytes, result, session.hits)
         jobroot.remove_job_folder(job, mounted)
         sandbox.grader_state_path(job).unlink(missing_ok=True)
+        sandbox.grader_keys_path(job).unlink(missing_ok=True)
     for q in questions:
         if result.fractions.get(q, 0.0) < 1.0 and not result.notes[q]:
             result.notes[q] = "wrong answer"

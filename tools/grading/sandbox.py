@@ -37,7 +37,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 
 import course_lib
-from course_lib.homework import own_work
+from course_lib.homework import answer_keys, own_work
 
 LAUNCHER = Path(__file__).with_name("launch.py")
 GIB = 1 << 30
@@ -216,6 +216,12 @@ def grader_state_path(job: Path) -> Path:
     return job.parent / f"{job.name}.state"
 
 
+def grader_keys_path(job: Path) -> Path:
+    """The answer keys of the submission's own data, beside ``job``; the sandbox shows them
+    read-only at ``answer_keys.GRADER_KEY_FILE``, so the notebook's checks work as at home."""
+    return job.parent / f"{job.name}.keys.json"
+
+
 def bwrap_argv(job: Path, limits: Limits | None = None) -> list[str]:
     """The bubblewrap command line (without the command) for a kernel in ``job``."""
     limits = limits or Limits()
@@ -255,6 +261,9 @@ def bwrap_argv(job: Path, limits: Limits | None = None) -> list[str]:
     state = grader_state_path(job)  # which exercises are guarded now: the grader's, read-only
     if state.is_file():
         argv += ["--ro-bind", str(state), own_work.GRADER_STATE_FILE]
+    keys = grader_keys_path(job)
+    if keys.is_file():
+        argv += ["--ro-bind", str(keys), answer_keys.GRADER_KEY_FILE]
     # nothing else is writable: not the root bwrap builds, not /dev (both RAM, unbounded)
     argv += ["--remount-ro", "/dev", "--remount-ro", "/"]
     return argv
