@@ -14,8 +14,10 @@ A check never raises and never shows a traceback: a placeholder (``...``) or a s
 raises ``NotImplementedError`` is reported as "not answered yet"; ``None``, a wrong type or
 shape, NaN, a function that raises (its exception type and message are shown) or never
 returns are each explained.  Checks test *properties* of an answer (unit length, on the
-ray, satisfies the Beta-constraint, ...) or compare with a value computed at check time
-from the question's data -- they never print the expected value.
+ray, satisfies the Beta-constraint, ...); a value whose only test is its formula is compared
+with an answer key (digests of the right value and of the usual mistakes,
+:mod:`course_lib.homework.answer_keys`), and "?" says the key for the student's data is missing.
+No check computes or prints an expected value.
 
 They are only feedback: the grade comes from hidden tests that are not shipped with
 ``course_lib`` (see ``tools/grade.py``).  Both read answers with :mod:`course_lib.homework.answers`:
