@@ -181,6 +181,7 @@ def test_a_student_without_a_key_is_told_so_not_marked_wrong():
         ({"format": 2, "cost": 16, "keys": {}}, "format 1"),
         ({"format": 1, "cost": 1000, "keys": {}}, "power of 2"),
         ([], "format 1"),
+        ({"format": 1, "cost": 16, "keys": {"ab": ["not", "a", "map"]}}, "digest: tag"),
     ],
 )
 def test_a_broken_key_file_is_refused_with_its_rule(document, rule):

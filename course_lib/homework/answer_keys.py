@@ -151,9 +151,12 @@ class AnswerKeys:
         cost = document.get("cost")
         if not (isinstance(cost, int) and cost >= 2 and cost & (cost - 1) == 0):
             raise ValueError("an answer-key file's cost must be a power of 2 (scrypt's n)")
+        entries = document.get("keys", {})
+        if not isinstance(entries, Mapping) or not all(isinstance(v, Mapping) for v in entries.values()):
+            raise ValueError("an answer-key file's keys must map each index to {digest: tag}")
         self.cost = cost
         self.entries: dict[str, dict[str, str]] = {
-            str(k): {str(d): str(t) for d, t in v.items()} for k, v in document.get("keys", {}).items()
+            str(k): {str(d): str(t) for d, t in v.items()} for k, v in entries.items()
         }
 
     def lookup(self, qid: str, quantum: float, data: Mapping, value: object) -> str:
