@@ -119,10 +119,16 @@ def test_the_key_file_holds_digests_and_tags_only():
 
 
 # ------------------------------------------------------------------ a ✓ is a full grade
-@settings(max_examples=60, deadline=None, phases=[Phase.explicit, Phase.reuse, Phase.generate, Phase.shrink])
+@settings(
+    max_examples=60,
+    deadline=None,
+    phases=[Phase.explicit, Phase.reuse, Phase.generate, Phase.shrink],
+)
 @given(
     student=st.integers(0, len(STUDENTS) - 1),
-    which=st.sampled_from([("hw01", "q1"), ("hw01", "q4"), ("hw01", "q5"), ("hw01", "q7"), ("hw02", "q5")]),
+    which=st.sampled_from(
+        [("hw01", "q1"), ("hw01", "q4"), ("hw01", "q5"), ("hw01", "q7"), ("hw02", "q5")]
+    ),
     steps=st.floats(-3.0, 3.0),
 )
 def test_a_check_s_tick_is_a_full_grade_and_far_misses_are_refused(student, which, steps):
@@ -132,7 +138,9 @@ def test_a_check_s_tick_is_a_full_grade_and_far_misses_are_refused(student, whic
     module = __import__(f"course_lib.homework.checks.{hw}", fromlist=["ANSWER_KEYS"])
     quantum = module.ANSWER_KEYS[q]
     data = variants.data(hw, HOMES[hw].codes[student])
-    right = np.atleast_1d(np.asarray(dict(HOMES[hw].hidden.key_values(data)[q])["right"], dtype=float))
+    right = np.atleast_1d(
+        np.asarray(dict(HOMES[hw].hidden.key_values(data)[q])["right"], dtype=float)
+    )
     value = right + steps * quantum
     if q == "q1" and hw == "hw01":  # a unit tangent stays a unit vector: turn it instead
         angle = steps * quantum

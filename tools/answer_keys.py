@@ -46,7 +46,9 @@ def keyed_questions() -> dict[str, dict[str, float]]:
     """``{homework: {question: grid step}}`` of every checks module with an ``ANSWER_KEYS``."""
     out = {}
     for hw in sorted(variants.generators()):
-        quanta = getattr(importlib.import_module(f"course_lib.homework.checks.{hw}"), "ANSWER_KEYS", None)
+        quanta = getattr(
+            importlib.import_module(f"course_lib.homework.checks.{hw}"), "ANSWER_KEYS", None
+        )
         if quanta:
             out[hw] = dict(quanta)
     return out
@@ -87,6 +89,7 @@ def build(
             values = hidden.key_values(data)
             for q, quantum in quanta.items():
                 jobs.append((f"{hw}.{q}", quantum, data[q], values[q]))
+
     def key(job):
         return answer_keys.entry(*job, cost=cost)
 

@@ -83,7 +83,9 @@ def _canonical(value: object) -> object:
 
 def question_index(qid: str, quantum: float, data: Mapping) -> str:
     """The key's index: a SHA-256 of the question id, the quantum and the question's data."""
-    text = json.dumps([qid, repr(float(quantum)), _canonical(data)], sort_keys=True, ensure_ascii=True)
+    text = json.dumps(
+        [qid, repr(float(quantum)), _canonical(data)], sort_keys=True, ensure_ascii=True
+    )
     return hashlib.sha256(text.encode()).hexdigest()[:32]
 
 
@@ -136,7 +138,11 @@ def entry(
     out: dict[str, str] = {digest(index, qid, tuple(right.tolist()), cost): "right"}
     for tag, value in pairs:
         point = _grid(value, quantum)
-        if tag == "right" or len(point) != right.size or np.max(np.abs(np.array(point) - right)) <= 3:
+        if (
+            tag == "right"
+            or len(point) != right.size
+            or np.max(np.abs(np.array(point) - right)) <= 3
+        ):
             continue
         out.setdefault(digest(index, qid, point, cost), tag)
     return index, out
@@ -152,7 +158,9 @@ class AnswerKeys:
         if not (isinstance(cost, int) and cost >= 2 and cost & (cost - 1) == 0):
             raise ValueError("an answer-key file's cost must be a power of 2 (scrypt's n)")
         entries = document.get("keys", {})
-        if not isinstance(entries, Mapping) or not all(isinstance(v, Mapping) for v in entries.values()):
+        if not isinstance(entries, Mapping) or not all(
+            isinstance(v, Mapping) for v in entries.values()
+        ):
             raise ValueError("an answer-key file's keys must map each index to {digest: tag}")
         self.cost = cost
         self.entries: dict[str, dict[str, str]] = {
@@ -197,7 +205,11 @@ def keys() -> AnswerKeys:
         if grader.is_file():
             text = grader.read_text(encoding="utf-8")
         else:
-            text = resources.files("course_lib.homework").joinpath(KEY_FILE).read_text(encoding="utf-8")
+            text = (
+                resources.files("course_lib.homework")
+                .joinpath(KEY_FILE)
+                .read_text(encoding="utf-8")
+            )
         _IN_USE.append(AnswerKeys(json.loads(text)))
     return _IN_USE[-1]
 
