@@ -261,3 +261,20 @@ def test_an_edition_released_with_the_roster_checks_a_roster_student_in_their_py
     assert right == "passed"
     assert mistake.startswith("✗ hw01.q5") and "one term is missing" in mistake
     assert unknown == "not checked here"
+
+
+@pytest.mark.parametrize(
+    "args, said",
+    [
+        (["--secret-file", "course_secret.txt"], "give --secret-file and --roster together"),
+        (["--roster", "roster.csv"], "give --secret-file and --roster together"),
+        (["--secret-file", "course_secret.txt", "--roster", "missing.csv"], "--roster missing.csv"),
+    ],
+)
+def test_a_release_with_half_of_what_keys_need_stops_in_one_sentence(tmp_path, args, said):
+    (tmp_path / "course_secret.txt").write_bytes(SECRET)
+    out = tmp_path / "edition"
+    done = subprocess.run([sys.executable, str(ROOT / "tools" / "release.py"), "--out", str(out), *args],
+                          cwd=tmp_path, capture_output=True, text=True, timeout=300)  # fmt: skip
+    assert done.returncode != 0 and said in done.stderr and "Traceback" not in done.stderr
+    assert not out.exists()  # nothing written

@@ -101,6 +101,18 @@ def build(
     return answer_keys.AnswerKeys({"format": answer_keys.FORMAT, "cost": cost, "keys": keys})
 
 
+def for_roster(secret_file: Path, roster: Path) -> tuple[answer_keys.AnswerKeys, list[str]]:
+    """The keys of the default data and of every student of ``roster`` (an LMS export as
+    downloaded, as for ``tools/variant.py codes``), and the students' ids; ``SystemExit`` with
+    one sentence for an unreadable file."""
+    secret = read_secret(secret_file)
+    try:
+        students = [entry.id for entry in reports.read_roster(roster).values()]
+    except OSError as exc:
+        raise SystemExit(f"--roster {roster}: {exc.strerror}") from None
+    return build(secret=secret, students=students), students
+
+
 def main(argv: list[str] | None = None) -> int:
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("--secret-file", type=Path, help="the course secret (tools/variant.py secret)")
@@ -109,15 +121,10 @@ def main(argv: list[str] | None = None) -> int:
     args = p.parse_args(argv)
     if (args.secret_file is None) != (args.roster is None):
         raise SystemExit("give --secret-file and --roster together (the students' codes need both)")
-    students: list[str] = []
-    secret = None
     if args.roster is not None:
-        secret = read_secret(args.secret_file)
-        try:
-            students = [entry.id for entry in reports.read_roster(args.roster).values()]
-        except OSError as exc:
-            raise SystemExit(f"--roster {args.roster}: {exc.strerror}") from None
-    keys = build(secret=secret, students=students)
+        keys, students = for_roster(args.secret_file, args.roster)
+    else:
+        keys, students = build(), []
     try:
         keys.write(args.out)
     except OSError as exc:

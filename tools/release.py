@@ -58,9 +58,9 @@ Work through `notebooks/` in order (`00_welcome` first). After each lecture come
 `exercises/`: replace every `...` (or write the body of the function), run the cell, then the
 **check cell** under it. It answers ✓, or ✗ with what is wrong, or "not answered yet"; the last
 cell checks everything at once. A "?" (value not checked here) means this copy has no answer key
-for your data: check that `VARIANT` is your code, and if it is, tell your instructor. The checks are feedback: your grade comes from the instructor's
-grader, which runs its own tests on other data, so write code that works in general and keep the
-answer names.
+for your data: check that `VARIANT` is your code, and if it is, tell your instructor. The checks
+are feedback: your grade comes from the instructor's grader, which runs its own tests on other
+data, so write code that works in general and keep the answer names.
 
 ## Your variant code
 
@@ -291,15 +291,8 @@ def main(argv: list[str] | None = None) -> int:
     keys = None
     if args.roster is not None:  # before anything is written: a bad roster stops the build
         from tools import answer_keys as keys_tool
-        from tools.grading import reports
-        from tools.variant import read_secret
 
-        secret = read_secret(args.secret_file)
-        try:
-            students = [e.id for e in reports.read_roster(args.roster).values()]
-        except OSError as exc:
-            raise SystemExit(f"--roster {args.roster}: {exc.strerror}") from None
-        keys = keys_tool.build(secret=secret, students=students)
+        keys, students = keys_tool.for_roster(args.secret_file, args.roster)
     if keys is not None:
         build(args.out, keys=keys)
         told = f"answer keys for the default data and {len(students)} students"
