@@ -105,3 +105,42 @@ def pytest_runtest_call(item):
                 pytrace=False,
             )
     return result
+
+
+# ------------------------------------------------------------------ two workers (make test)
+# `make test` runs pytest on two workers (pytest-xdist: `-n 2 --dist loadgroup
+# --no-loadscope-reorder`).  The unit of work a worker gets is a whole test file -- a notebook's
+# cells run in order in one kernel, and a module's fixtures (the site build, the student
+# edition, a grading batch) are built once -- or, for tests marked
+# `pytest.mark.xdist_group("name")`, every test of that group (the browser tests share one
+# Chromium and never run two servers at once).  Files holding a `slow` test are handed out
+# first, so that the two workers finish together instead of one waiting on a long file at
+# the end.  Without xdist (`pytest tests/test_x.py`) none of this applies.
+
+
+def work_unit(nodeid: str, group: str | None = None) -> str:
+    """What one worker runs together: the ``xdist_group`` if the test has one, else its file."""
+    return group if group else nodeid.split("::", 1)[0]
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_xdist_make_scheduler(config, log):
+    """``--dist loadgroup`` with a whole file as the unit of a test without a group."""
+    if config.getoption("dist") != "loadgroup":
+        return None
+    from xdist.scheduler import LoadGroupScheduling
+
+    class FileOrGroupScheduling(LoadGroupScheduling):
+        def _split_scope(self, nodeid: str) -> str:
+            scope = super()._split_scope(nodeid)  # the group name, or the nodeid itself
+            return work_unit(nodeid, None if scope == nodeid else scope)
+
+    return FileOrGroupScheduling(config, log)
+
+
+def pytest_collection_modifyitems(config, items) -> None:
+    """On an xdist worker: the files (and groups) holding a ``slow`` test come first."""
+    if not hasattr(config, "workerinput"):
+        return
+    heavy = {item.path for item in items if item.get_closest_marker("slow")}
+    items.sort(key=lambda item: item.path not in heavy)  # stable: the order within is kept
