@@ -108,38 +108,42 @@ def pytest_runtest_call(item):
 
 
 # ------------------------------------------------------------------ two workers (make test)
-# `make test` runs pytest on two workers (pytest-xdist: `-n 2 --dist loadgroup
+# `make test` runs pytest on two workers (pytest-xdist: `-n 2 --dist loadfile
 # --no-loadscope-reorder`).  The unit of work a worker gets is a whole test file -- a notebook's
 # cells run in order in one kernel, and a module's fixtures (the site build, the student
-# edition, a grading batch) are built once -- or, for tests marked
-# `pytest.mark.xdist_group("name")`, every test of that group (the browser tests share one
-# Chromium and never run two servers at once).  Files holding a `slow` test are handed out
-# first, so that the two workers finish together instead of one waiting on a long file at
+# edition, a grading batch) are built once -- and the folders of SHARED_WORKER are one unit
+# each: all browser tests run on one worker (one Chromium for the session, one notebook server
+# at a time).  pytest-xdist's own `xdist_group` mark cannot do this here: xdist 3.8 renames the
+# test (`item._nodeid`), which pytest 9 no longer reads.  Files holding a `slow` test are handed
+# out first, so that the two workers finish together instead of one waiting on a long file at
 # the end.  Without xdist (`pytest tests/test_x.py`) none of this applies.
 
+#: test folders whose files one worker runs, one after the other
+SHARED_WORKER = {"tests/browser/": "tests/browser (one worker)"}
 
-def work_unit(nodeid: str, group: str | None = None) -> str:
-    """What one worker runs together: the ``xdist_group`` if the test has one, else its file."""
-    return group if group else nodeid.split("::", 1)[0]
+
+def work_unit(nodeid: str) -> str:
+    """What one worker runs together: the test's file, or its folder in :data:`SHARED_WORKER`."""
+    path = nodeid.split("::", 1)[0]
+    return next((unit for top, unit in SHARED_WORKER.items() if path.startswith(top)), path)
 
 
 @pytest.hookimpl(optionalhook=True)
 def pytest_xdist_make_scheduler(config, log):
-    """``--dist loadgroup`` with a whole file as the unit of a test without a group."""
-    if config.getoption("dist") != "loadgroup":
+    """``--dist loadfile``, with the folders of :data:`SHARED_WORKER` one unit each."""
+    if config.getoption("dist") != "loadfile":
         return None
-    from xdist.scheduler import LoadGroupScheduling
+    from xdist.scheduler import LoadFileScheduling
 
-    class FileOrGroupScheduling(LoadGroupScheduling):
+    class CourseScheduling(LoadFileScheduling):
         def _split_scope(self, nodeid: str) -> str:
-            scope = super()._split_scope(nodeid)  # the group name, or the nodeid itself
-            return work_unit(nodeid, None if scope == nodeid else scope)
+            return work_unit(nodeid)
 
-    return FileOrGroupScheduling(config, log)
+    return CourseScheduling(config, log)
 
 
 def pytest_collection_modifyitems(config, items) -> None:
-    """On an xdist worker: the files (and groups) holding a ``slow`` test come first."""
+    """On an xdist worker: the files holding a ``slow`` test come first."""
     if not hasattr(config, "workerinput"):
         return
     heavy = {item.path for item in items if item.get_closest_marker("slow")}

@@ -35,8 +35,7 @@ from browser_harness import ARTIFACTS, RUN_STATE_JS, kernel, make_server, new_pa
 
 ROOT = Path(__file__).resolve().parents[2]
 
-# one worker runs all browser tests: one Chromium, one notebook server at a time (conftest.py)
-pytestmark = [pytest.mark.browser, pytest.mark.slow, pytest.mark.xdist_group("browser")]
+pytestmark = [pytest.mark.browser, pytest.mark.slow]
 
 OUT = ARTIFACTS / "a11y"
 AXE_ENV = "COURSE_AXE"

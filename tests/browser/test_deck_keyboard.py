@@ -43,8 +43,7 @@ from browser_harness import WAIT_MS, make_server, new_page
 from test_accessibility import AXE_DEFAULT, AXE_ENV, AXE_VERSION, OUT, own_violations, run_axe
 from test_lecture_deck import deck_server  # noqa: F401  (the fixture: lecture 05's deck)
 
-# one worker runs all browser tests: one Chromium, one notebook server at a time (conftest.py)
-pytestmark = [pytest.mark.browser, pytest.mark.slow, pytest.mark.xdist_group("browser")]
+pytestmark = [pytest.mark.browser, pytest.mark.slow]
 ROOT = Path(__file__).resolve().parents[2]
 
 #: where the focus is: the classes of the closest course widget around document.activeElement

@@ -41,8 +41,7 @@ SLIDERS = (".cl-slider-beta1", ".cl-slider-shape", ".cl-slider-knot", ".cl-slide
 N = int(os.environ.get("COURSE_LATENCY_SAMPLES", "10"))
 QUIET_MS = 80  # no new frame for this long (and the kernel idle): the demo has finished
 
-# one worker runs all browser tests: one Chromium, one notebook server at a time (conftest.py)
-pytestmark = [pytest.mark.browser, pytest.mark.slow, pytest.mark.xdist_group("browser")]
+pytestmark = [pytest.mark.browser, pytest.mark.slow]
 
 # Installed before any page script: timestamps of inputs and of every frame painted on a
 # visible canvas.

@@ -50,8 +50,7 @@ ROOT = Path(__file__).resolve().parents[2]
 # when a failure has to be located; test_notebook_shows_a_course_demo then fails on purpose).
 NOTEBOOK = ROOT / "notebooks" / "00_welcome.ipynb"
 
-# one worker runs all browser tests: one Chromium, one notebook server at a time (conftest.py)
-pytestmark = [pytest.mark.browser, pytest.mark.slow, pytest.mark.xdist_group("browser")]
+pytestmark = [pytest.mark.browser, pytest.mark.slow]
 
 # Sliders tried in this order inside the demo (CONTRIBUTING.md, "Widget hooks").
 SLIDERS = (".cl-slider-beta1", ".cl-slider-knot", ".cl-slider-beta2", ".cl-slider-t")

@@ -28,8 +28,7 @@ from browser_harness import WAIT_MS, WAIT_S, make_server, new_page
 
 ROOT = Path(__file__).resolve().parents[2]
 LECTURE = "05"
-# one worker runs all browser tests: one Chromium, one notebook server at a time (conftest.py)
-pytestmark = [pytest.mark.browser, pytest.mark.slow, pytest.mark.xdist_group("browser")]
+pytestmark = [pytest.mark.browser, pytest.mark.slow]
 
 
 def _present():
