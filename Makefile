@@ -38,7 +38,7 @@ test: install
 	@bash tools/ensure-sandbox || true
 	@bash tools/ensure-test-data || true
 	$(BIN)/ruff check course_lib tests benchmarks tools conftest.py solutions/hidden_tests
-	$(BIN)/python -m pytest
+	$(BIN)/python -m pytest -n 2 --dist loadfile --no-loadscope-reorder
 
 lint: install
 	$(BIN)/ruff check course_lib tests benchmarks tools conftest.py solutions/hidden_tests

@@ -105,3 +105,46 @@ def pytest_runtest_call(item):
                 pytrace=False,
             )
     return result
+
+
+# ------------------------------------------------------------------ two workers (make test)
+# `make test` runs pytest on two workers (pytest-xdist: `-n 2 --dist loadfile
+# --no-loadscope-reorder`).  The unit of work a worker gets is a whole test file -- a notebook's
+# cells run in order in one kernel, and a module's fixtures (the site build, the student
+# edition, a grading batch) are built once -- and the folders of SHARED_WORKER are one unit
+# each: all browser tests run on one worker (one Chromium for the session, one notebook server
+# at a time).  pytest-xdist's own `xdist_group` mark cannot do this here: xdist 3.8 renames the
+# test (`item._nodeid`), which pytest 9 no longer reads.  Files holding a `slow` test are handed
+# out first, so that the two workers finish together instead of one waiting on a long file at
+# the end.  Without xdist (`pytest tests/test_x.py`) none of this applies.
+
+#: test folders whose files one worker runs, one after the other
+SHARED_WORKER = {"tests/browser/": "tests/browser (one worker)"}
+
+
+def work_unit(nodeid: str) -> str:
+    """What one worker runs together: the test's file, or its folder in :data:`SHARED_WORKER`."""
+    path = nodeid.split("::", 1)[0]
+    return next((unit for top, unit in SHARED_WORKER.items() if path.startswith(top)), path)
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_xdist_make_scheduler(config, log):
+    """``--dist loadfile``, with the folders of :data:`SHARED_WORKER` one unit each."""
+    if config.getoption("dist") != "loadfile":
+        return None
+    from xdist.scheduler import LoadFileScheduling
+
+    class CourseScheduling(LoadFileScheduling):
+        def _split_scope(self, nodeid: str) -> str:
+            return work_unit(nodeid)
+
+    return CourseScheduling(config, log)
+
+
+def pytest_collection_modifyitems(config, items) -> None:
+    """On an xdist worker: the files holding a ``slow`` test come first."""
+    if not hasattr(config, "workerinput"):
+        return
+    heavy = {item.path for item in items if item.get_closest_marker("slow")}
+    items.sort(key=lambda item: item.path not in heavy)  # stable: the order within is kept

@@ -74,10 +74,13 @@ def _marker_processes() -> list[str]:
 
 
 def _pwned_files(roots: list[Path]) -> list[Path]:
+    """Every file named ``PWNED_NAME`` under ``roots``.  ``os.walk`` skips a folder that vanishes
+    while it is read (the other test worker's temporary folders come and go meanwhile), where
+    ``Path.rglob`` would raise."""
     hits = []
     for root in roots:
-        if root.exists():
-            hits += [p for p in root.rglob(cheats.PWNED_NAME)]
+        for folder, _dirs, files in os.walk(root):
+            hits += [Path(folder) / name for name in files if name == cheats.PWNED_NAME]
     return hits
 
 

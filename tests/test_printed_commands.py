@@ -115,6 +115,7 @@ ROOT = Path(__file__).resolve().parents[1]
 VENV = Path(sys.prefix)
 
 pytestmark = [
+    pytest.mark.slow,  # a minute and a half of commands
     pytest.mark.skipif(shutil.which("make") is None, reason="needs make"),
     pytest.mark.skipif(
         not (VENV / ".installed").is_file(),

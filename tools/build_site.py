@@ -159,7 +159,9 @@ def execute_notebook(src: str, dst: str, cwd: str, env: dict[str, str]) -> float
         cell.outputs = [o for o in cell.outputs if o.get("output_type") != "error"]
         cell.metadata["course_live_only"] = True
     Path(dst).parent.mkdir(parents=True, exist_ok=True)
-    tmp = Path(dst).with_suffix(".tmp")
+    # a private temporary name, then an atomic rename: two builds sharing build/site-cache/
+    # (the test run's two workers) may execute the same notebook at the same time
+    tmp = Path(dst).with_suffix(f".{os.getpid()}.tmp")
     nbformat.write(nb, str(tmp))
     tmp.replace(dst)
     return time.perf_counter() - t0
@@ -194,7 +196,7 @@ def execute_all(items: list[tuple[Path, str]], jobs: int, use_cache: bool) -> di
     for path, _ in items:
         for old in CACHE.glob(f"{path.stem}-*.ipynb"):
             if old.name not in keep:
-                old.unlink()
+                old.unlink(missing_ok=True)  # another build may have dropped it already
     return done
 
 

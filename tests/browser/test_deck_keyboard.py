@@ -141,10 +141,13 @@ def drive_by_keyboard(chromium_browser, url: str, name: str, result: dict, artif
         result["Tab presses y -> nudge right"] = _tab_to(
             page, ".cl-demo .cl-nudge-right button, .cl-demo button.cl-nudge-right", limit=20)
         for key in (" ", "Enter"):
-            text1, x1 = live.inner_text(), float(x_field.input_value())
+            text1, shown = live.inner_text(), x_field.input_value()
+            x1 = float(shown)
             _press_in_place(page, key)
             expect(live).not_to_have_text(text1, timeout=WAIT_MS)
-            expect(x_field).not_to_have_value(str(x1), timeout=WAIT_MS)
+            # wait for the field's own text to change: it shows "1", and a wait for a change
+            # from str(1.0) == "1.0" passed at once (a busy machine's late update then failed)
+            expect(x_field).not_to_have_value(shown, timeout=WAIT_MS)
             assert float(x_field.input_value()) > x1, (key, x1, x_field.input_value())
         result["live region at the end"] = live.inner_text()
         page.screenshot(path=str(artifacts / f"{name}-demo.png"))
