@@ -42,7 +42,7 @@ MISTAKE_MESSAGES = {
     "sign-right": "turns right",
     "radius": "radius of curvature",
     "power": "power of ‖q'‖",
-    "missing-term": "one term is missing",
+    "missing-term": "missing",
     "at-s": "not at u = s",
     "f1-not-squared": "f' enters squared",
     "original": "q'' of the original curve",
@@ -278,3 +278,37 @@ def test_a_release_with_half_of_what_keys_need_stops_in_one_sentence(tmp_path, a
                           cwd=tmp_path, capture_output=True, text=True, timeout=300)  # fmt: skip
     assert done.returncode != 0 and said in done.stderr and "Traceback" not in done.stderr
     assert not out.exists()  # nothing written
+
+
+def test_a_rounded_number_is_told_to_keep_its_digits_not_that_the_formula_is_wrong():
+    """The walk: κ typed with 8 decimals was told "not the signed curvature" alone."""
+    data = variants.data("hw01", variants.DEFAULT)
+    kappa = dict(HOMES["hw01"].hidden.key_values(data)["q4"])["right"]
+    typed = check("hw01.q4", float(f"{kappa:.8f}"))
+    computed_wrong = check("hw01.q4", kappa * math.pi)
+    assert not typed.passed and "If you typed a rounded number" in typed.message
+    assert "9 decimals" in typed.message
+    assert not computed_wrong.passed and "rounded" not in computed_wrong.message
+    assert check("hw01.q4", kappa).passed  # full precision
+
+
+def test_without_a_key_the_checks_that_need_none_still_speak():
+    """A late enrolment's q7: an arc shorter than its chord is still "too short"; the report
+    counts the questions not checked here apart from the failed ones."""
+    code = variants.code_for(SECRET, "hw01", "a-late-enrolment")
+    data = variants.data("hw01", code)
+    try:
+        keys = answer_keys.keys()
+        answer_keys.use(answer_keys.AnswerKeys({"format": 1, "cost": 16, "keys": {}}))
+        short = check("hw01.q7", 0.0001)
+        unchecked = check("hw01.q7", 1e3)
+        from course_lib.homework.checks import check_all
+
+        worked = HOMES["hw01"].hidden.answers_for(data)
+        report = str(check_all({**worked, "HOMEWORK": "hw01", "VARIANT": code}, "hw01"))
+    finally:
+        answer_keys.use(keys)
+        variants.data("hw01", variants.DEFAULT)
+    assert short.status == "failed" and "too short" in short.message
+    assert unchecked.status == "not checked here"
+    assert "4 not checked here (no answer key for your data)" in report.splitlines()[0], report

@@ -64,6 +64,7 @@ def key_values(data):
         "q5": [
             ("right", _r2(d)),
             ("beta1-not-squared", b1 * q2 + b2 * q1),
+            ("missing-term", b1**2 * q2),
             ("mixed-up", b1**2 * q2 + b2 * q2),
             ("mixed-up", b1**2 * q1 + b2 * q2),
         ]

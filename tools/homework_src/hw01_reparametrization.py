@@ -27,6 +27,8 @@
 # data and, for the functions, on other data too, so write code that works in general. Keep
 # the names (`answer_q1`, `chain_rule_derivatives`, ...),
 # do not delete cells, and before you hand in run *Kernel → Restart Kernel and Run All Cells*.
+# Numbers are checked and graded to about 9 decimals (q7, an integral: 6 significant digits):
+# compute them in Python from `DATA`; a rounded number you type in is wrong.
 # Multiple-choice questions are for practice, worth 0 points: a letter can be found by trying
 # each one in its check.
 #

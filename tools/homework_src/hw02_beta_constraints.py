@@ -25,6 +25,8 @@
 # The checks are feedback; the grade comes from the grader's own tests, on your data and, for
 # the functions, on other data too. Keep the names, do not delete cells, and before you hand in
 # run *Kernel → Restart Kernel and Run All Cells*.
+# Numbers are checked and graded to about 9 decimals: compute them in Python from `DATA`; a
+# rounded number you type in is wrong.
 # Multiple-choice questions are for practice, worth 0 points: a letter can be found by trying
 # each one in its check.
 #

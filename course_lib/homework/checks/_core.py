@@ -37,6 +37,7 @@ __all__ = [
     "refuse_if_traced",
     "register",
     "registry",
+    "typed_rounded",
     "values_digest",
 ]
 
@@ -116,7 +117,9 @@ class Report:
         return self.all_passed
 
     def _summary(self) -> str:
-        return f"{self.homework}: {self.n_passed} of {len(self.verdicts)} checks passed"
+        text = f"{self.homework}: {self.n_passed} of {len(self.verdicts)} checks passed"
+        unchecked = sum(v.status == UNCHECKED for v in self.verdicts)
+        return text + (f", {unchecked} not checked here (no answer key for your data)" if unchecked else "")
 
     def __str__(self) -> str:
         notes = [f"  ⚠ {n}" for n in self.notes]
@@ -341,6 +344,21 @@ def key_tag(qid: str, quantum: float, data: Mapping, value: object) -> str:
     if tag == answer_keys.NO_KEY:
         raise Unchecked(NO_KEY_MESSAGE)
     return tag
+
+
+def typed_rounded(value: object) -> bool:
+    """Does ``value`` look typed in rather than computed: every component a decimal of at most
+    8 significant digits (``0.4104``, ``[-1.5, 0.22]``)?  A computed irrational value has ~16."""
+    x = np.atleast_1d(np.asarray(value, dtype=float)).ravel()
+    return bool(x.size) and all(len(f"{abs(c):.8g}".replace(".", "").lstrip("0")) < 9
+                                and float(f"{c:.8g}") == c for c in x)  # fmt: skip
+
+
+#: added to a ✗ of an answer-keyed value that looks typed in (:func:`typed_rounded`)
+ROUNDED_HINT = (
+    " If you typed a rounded number, compute it in Python instead: the check and the grader "
+    "need about 9 decimals (this check cannot tell how close a rounded number is)."
+)
 
 
 def run_validate(qid: str, validate: Callable[[object], tuple[bool, str]], answer: object) -> Verdict:

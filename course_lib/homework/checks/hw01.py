@@ -42,6 +42,7 @@ from numpy.polynomial import polynomial as P
 
 from course_lib.homework import variants
 from course_lib.homework.checks._core import (
+    ROUNDED_HINT,
     answer_hash,
     as_choice,
     as_number,
@@ -52,6 +53,7 @@ from course_lib.homework.checks._core import (
     key_tag,
     ok,
     register,
+    typed_rounded,
 )
 
 # ============================================================ the question data: every student's variant
@@ -268,7 +270,10 @@ def _q1(answer):
         )
     if tag == "swapped":
         return fail("the components are swapped: T = (x'(t0), y'(t0)) / ‖c'(t0)‖, x first.")
-    return fail("T is not parallel to the velocity c'(t0): differentiate each coordinate, then normalize.")
+    return fail(
+        "T is not parallel to the velocity c'(t0): differentiate each coordinate, then normalize."
+        + (ROUNDED_HINT if typed_rounded(T) else "")
+    )
 
 
 _Q2_CASES = [
@@ -338,7 +343,10 @@ def _q4(answer):
         return fail("that is the radius of curvature 1/|κ|, not the curvature κ.")
     if tag == "power":
         return fail("the power of ‖q'‖ in the denominator: κ = det(q', q'') / ‖q'‖³.")
-    return fail("not the signed curvature: κ = det(q', q'') / ‖q'‖³ at u0.")
+    return fail(
+        "not the signed curvature: κ = det(q', q'') / ‖q'‖³ at u0."
+        + (ROUNDED_HINT if typed_rounded(k) else "")
+    )
 
 
 @register("hw01.q5", "answer_q5", "second derivative of the reparametrized parabola at s0")
@@ -353,11 +361,8 @@ def _q5(answer):
         "f1-not-squared": "differentiating q'(f(s)) gives q''(f(s)) f'(s): f' enters squared.",
         "original": "that is q'' of the original curve; the reparametrization changes it.",
     }
-    return fail(
-        messages.get(
-            tag, "not q̃''(s0): evaluate q', q'' at u = f(s0) and f', f'' at s0, then use your chain rule."
-        )
-    )
+    generic = "not q̃''(s0): evaluate q', q'' at u = f(s0) and f', f'' at s0, then use your chain rule."
+    return fail(messages.get(tag, generic + (ROUNDED_HINT if typed_rounded(v) else "")))
 
 
 #: hashes (salt "hw01.q6.intrinsic") of the labels of the intrinsic quantities: the check
@@ -378,12 +383,16 @@ def _q6(answer):
 @register("hw01.q7", "answer_q7", "arc length of the parabola (u, k u²), 0 ≤ u ≤ b")
 def _q7(answer):
     s = as_number(answer, "answer_q7", QUAD_HINT)
+    d = _data("q7")
+    chord = math.hypot(d["b"], d["k"] * d["b"] ** 2)  # a bound, not the answer
+    if s < chord * (1 - 1e-9):
+        return fail("too short: no curve between two points is shorter than the straight chord.")
     tag = _tag("q7", s)
     if tag == "right":
         return ok("correct.")
     if tag == "chord":
         return fail("that is the length of the chord from q(0) to q(b); the arc is longer.")
-    d = _data("q7")
-    if s < math.hypot(d["b"], d["k"] * d["b"] ** 2):  # a bound, not the answer
-        return fail("too short: no curve between two points is shorter than the straight chord.")
-    return fail("not the arc length: integrate the speed ‖q'(u)‖ from 0 to b.")
+    return fail(
+        "not the arc length: integrate the speed ‖q'(u)‖ from 0 to b."
+        + (ROUNDED_HINT if typed_rounded(s) else "")
+    )

@@ -40,6 +40,7 @@ import numpy as np
 
 from course_lib.homework import answers, variants
 from course_lib.homework.checks._core import (
+    ROUNDED_HINT,
     answer_hash,
     as_choice,
     as_number,
@@ -51,6 +52,7 @@ from course_lib.homework.checks._core import (
     key_tag,
     ok,
     register,
+    typed_rounded,
 )
 
 # ============================================================ the question data: every student's variant
@@ -278,9 +280,11 @@ def _q5(answer):
         return ok("correct (eq. 7.2).")
     if tag == "beta1-not-squared":
         return fail("β1 enters the second derivative squared: β1² q''(1) + β2 q'(1).")
+    if tag == "missing-term":
+        return fail("the β2 term is missing: r''(0) = β1² q''(1) + β2 q'(1).")
     if tag == "mixed-up":
         return fail("β1² multiplies q''(1) and β2 multiplies q'(1) -- you mixed them up.")
-    return fail("not β1² q''(1) + β2 q'(1) (eq. 7.2).")
+    return fail("not β1² q''(1) + β2 q'(1) (eq. 7.2)." + (ROUNDED_HINT if typed_rounded(v) else ""))
 
 
 #: hash (salt "hw02.q6.right") of the right statement's label: the check finds its letter in
