@@ -977,3 +977,28 @@ def test_the_sandbox_shows_the_state_file_read_only(tmp_path):
     i = argv.index(own_work.GRADER_STATE_FILE)
     assert argv[i - 2 : i] == ["--ro-bind", str(sandbox.grader_state_path(job))]
     assert job not in sandbox.grader_state_path(job).parents  # not in the writable job folder
+
+
+def test_the_grading_page_lists_exactly_the_values_open_to_another_tool():
+    """Every value question with points, and its total, is in the "types the number in" list."""
+    import re
+
+    text = " ".join((ROOT / "site" / "grading.md").read_text(encoding="utf-8").split())
+    start = text.index("Open to a student who **computes a value somewhere else")
+    part = text[start : text.index("points)", start)]
+    listed, hw = set(), None
+    for token in re.findall(r"hw\d\d|q\d", part):
+        if token.startswith("hw"):
+            hw = token
+        else:
+            listed.add(f"{hw}.{token}")
+    values = {
+        f"{hw}.{q}"
+        for hw in HOMEWORKS
+        for q, p in HIDDEN[hw].POINTS.items()
+        if p > 0 and registry()[f"{hw}.{q}"].answer_name.startswith("answer_")
+    }
+    assert listed == values
+    total = sum(HIDDEN[qid.split(".")[0]].POINTS[qid.split(".")[1]] for qid in values)
+    course = sum(sum(HIDDEN[hw].POINTS.values()) for hw in HOMEWORKS)
+    assert f"({total:g} of {course:g} points)" in text

@@ -168,3 +168,46 @@ def test_code_too_deep_to_read_is_flagged_not_a_crash():
     assert all(f.cell == 2 for f in findings)  # flagged, or unparsable (then it cannot run)
     nested_exec = "exec(" * 3 + '"import ctypes"' + ")" * 3
     assert tamper.scan([nested_exec]) != []
+
+
+# ------------------------------------------------------------------ answers typed in
+VALUE_NAMES = [f"answer_q{n}" for n in range(1, 8)]
+
+
+@pytest.mark.parametrize("path", COURSE_NOTEBOOKS, ids=lambda p: p.name)
+def test_no_course_notebook_types_a_value_answer_in(path):
+    assert tamper.typed_answers(_cells(path), VALUE_NAMES) == []
+
+
+@pytest.mark.parametrize(
+    "source, flagged",
+    [
+        ("answer_q4 = 0.4104456668795813", True),  # computed elsewhere, pasted (the walk)
+        ("answer_q5 = np.array([-1.5, -0.2237500000012])", True),
+        ("answer_q7: float = float(0.7672247797918961)", True),
+        ("answer_q4 = -0.41044567", False),  # 8 digits: a rounded number (the check says so)
+        ("answer_q5 = np.array([4.25, -0.75])", False),  # read off small data
+        ("answer_q4 = kappa", False),
+        ("answer_q4 = 2 * k / (1 + 4 * k * k * u * u) ** 1.5", False),
+        ("x = 0.4104456668795813", False),  # not an answer
+    ],
+)
+def test_a_long_number_typed_as_a_value_answer_is_found(source, flagged):
+    found = tamper.typed_answers(["import numpy as np", source], VALUE_NAMES)
+    assert bool(found) == flagged, found
+    if flagged:
+        assert "typed in code cell 2" in found[0] and source.split(" ")[0].rstrip(":") in found[0]
+
+
+def test_a_typed_answer_is_flagged_for_the_instructor_and_keeps_its_points():
+    class Tests:
+        homework, points, max_points = "hw03", {"q1": 2.0}, 2.0
+
+    r = _result()
+    r.points, r.notes, r.fractions = {"q1": 2.0}, {"q1": ""}, {"q1": 1.0}
+    tamper.note_typed(r, [PREP, "answer_q1 = [0.123456789012, 2]"], ["answer_q1"])
+    assert identity.TYPED_IN in reports.flags_of(r) and r.points == {"q1": 2.0}
+    assert not r.run_notes  # the student's feedback says nothing of it
+    text, _ = reports.summary([r], Tests, None)
+    first = text.split("## Statistics")[0]
+    assert "typed in as a long number" in first and "answer_q1 is a 12-digit number" in first

@@ -46,8 +46,9 @@ WRONG_CODE = "wrong variant code"
 NO_CODE = "no variant code"
 SHARED_CODE = "shared variant code"
 TAMPERING = "reaches into the grader"  # the notebook's code (tools/grading/tamper.py)
+TYPED_IN = "answer typed in"  # a value answer written as a long number (tools/grading/tamper.py)
 FLAGS = (NOT_IN_ROSTER, EDITED, ID_DIFFERS, TIMES_DISAGREE, LATE, SEVERAL, WRONG_CODE,
-         SHARED_CODE, NO_CODE, FILE_TIME_AFTER, TAMPERING)  # fmt: skip
+         SHARED_CODE, NO_CODE, FILE_TIME_AFTER, TAMPERING, TYPED_IN)  # fmt: skip
 
 #: a manifest time more than this after the file's own time cannot be true
 CLOCK_SLACK_SECONDS = 600

@@ -451,6 +451,7 @@ def variant_spread(results, tests, labels: dict[str, dict[str, str]]) -> dict[st
 ACT_ON = (
     ("not in the roster", "Not in the roster (not in the import file; resolve by hand, then `--only`)"),
     ("reaches into the grader", "Code that reaches into the grader's guards (review the notebook; why follows each name)"),
+    ("answer typed in", "A value answer typed in as a long number, not computed in the notebook (review: where did it come from?)"),
     ("edited after submit", "Edited after submit() (checksum mismatch)"),
     ("manifest id differs", "The submit() manifest names another roster student"),
     ("manifest time disagrees", "The submit() manifest's time disagrees with the LMS/file time"),

@@ -862,6 +862,8 @@ def grade_notebook(
         if result.fractions.get(q, 0.0) < 1.0 and not result.notes[q]:
             result.notes[q] = "wrong answer"
     tamper.apply(result, cells, tests.homework, tests.points)  # flagged; certain: guards' points 0
+    values = [f"answer_{q}" for q, p in tests.points.items() if p > 0]  # the value answers' names
+    tamper.note_typed(result, cells, values)  # flagged for review; the points stand
     if mode != "bwrap":
         result.run_notes.append(UNSANDBOXED_NOTE)
     result.seconds = round(time.monotonic() - start, 1)

@@ -37,7 +37,7 @@ from course_lib.homework import own_work
 
 from . import identity
 
-__all__ = ["FLAG", "REVIEW_NOTE", "Finding", "apply", "guarded_questions", "scan"]
+__all__ = ["FLAG", "REVIEW_NOTE", "Finding", "apply", "guarded_questions", "note_typed", "scan", "typed_answers"]
 
 #: the status-column flag (identity.py's flag kinds)
 FLAG = identity.TAMPERING
@@ -524,3 +524,62 @@ def apply(result, cells: list[str], homework: str, points: dict[str, float]) -> 
                 result.fractions[key] = 0.0
                 result.notes[key] = ZERO_NOTE
     return findings
+
+
+# ------------------------------------------------------------------ answers typed in
+#: significant digits from which a number written in a notebook was not typed from the question
+TYPED_DIGITS = 9
+
+
+def _literal_numbers(node: ast.AST) -> list[float] | None:
+    """The numbers of an expression made only of number literals (``-0.41``, ``[1.5, 2]``,
+    ``np.array([...])``, ``float(...)``), else None (the expression computes something)."""
+    if isinstance(node, ast.Constant) and isinstance(node.value, int | float) and not isinstance(node.value, bool):
+        return [float(node.value)]
+    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub | ast.UAdd):
+        return _literal_numbers(node.operand)
+    if isinstance(node, ast.List | ast.Tuple):
+        parts = [_literal_numbers(e) for e in node.elts]
+        return None if any(p is None for p in parts) else [x for p in parts for x in p]
+    if isinstance(node, ast.Call) and not node.keywords and len(node.args) == 1:
+        name = node.func.attr if isinstance(node.func, ast.Attribute) else getattr(node.func, "id", "")
+        if name in ("array", "asarray", "float", "float64"):
+            return _literal_numbers(node.args[0])
+    return None
+
+
+def _digits(x: float) -> int:
+    mantissa = repr(abs(x)).split("e")[0].replace(".", "").lstrip("0").rstrip("0")
+    return len(mantissa)
+
+
+def typed_answers(cells: Iterable[str], answer_names: Iterable[str]) -> list[str]:
+    """``answer_q4 = 0.4104456668795813``-like assignments of the value answers
+    ``answer_names``: a number of :data:`TYPED_DIGITS` or more significant digits written in the
+    notebook, not computed there (where it came from is for the instructor to ask)."""
+    wanted, found = set(answer_names), []
+    for number, source in enumerate(cells, start=1):
+        tree = _python(str(source))
+        for node in ast.walk(tree) if tree is not None else ():
+            if isinstance(node, ast.Assign):
+                targets, value = node.targets, node.value
+            elif isinstance(node, ast.AnnAssign) and node.value is not None:
+                targets, value = [node.target], node.value
+            else:
+                continue
+            names = [t.id for t in targets if isinstance(t, ast.Name) and t.id in wanted]
+            numbers = _literal_numbers(value) if names else None
+            if numbers and max(map(_digits, numbers)) >= TYPED_DIGITS:
+                found += [f"{name} is a {max(map(_digits, numbers))}-digit number typed in code cell {number}"
+                          for name in names]  # fmt: skip
+    return found
+
+
+def note_typed(result, cells: list[str], answer_names: Iterable[str]) -> list[str]:
+    """Flag a runner ``Result`` whose value answers are typed in (:func:`typed_answers`): the
+    status column and ``summary.md`` (instructor only); the points stand."""
+    found = typed_answers(cells, answer_names)
+    if found:
+        result.status = f"{result.status}; {identity.TYPED_IN}"
+        result.private_notes[identity.TYPED_IN] = "; ".join(found)
+    return found
