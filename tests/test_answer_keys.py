@@ -312,3 +312,24 @@ def test_without_a_key_the_checks_that_need_none_still_speak():
     assert short.status == "failed" and "too short" in short.message
     assert unchecked.status == "not checked here"
     assert "4 not checked here (no answer key for your data)" in report.splitlines()[0], report
+
+
+@pytest.mark.parametrize(
+    "hw, q, tag, words",
+    [
+        ("hw01", "q4", "sign-left", "the sign of κ is wrong"),
+        ("hw01", "q4", "radius", "radius of curvature"),
+        ("hw01", "q5", "missing-term", "a term of the chain rule is missing"),
+        ("hw01", "q7", "chord", "length of the chord"),
+        ("hw02", "q5", "missing-term", "the β2 term is missing"),
+    ],
+)
+def test_the_grader_s_feedback_names_the_mistake_the_check_named(hw, q, tag, words):
+    """The walk: a sign error was "✗ the sign is not right" in the check but only "κ(-2) is
+    wrong" in the grade's feedback."""
+    data = variants.data(hw, variants.DEFAULT)
+    pairs = HOMES[hw].hidden.key_values(data)[q]
+    value = next(v for t, v in pairs if t == tag or (tag == "sign-left" and t.startswith("sign")))
+    test = getattr(HOMES[hw].hidden, q)
+    fraction, note = run_question(lambda student: test(student, data), LocalStudent({KEYED[hw][q]: value}))
+    assert fraction == 0.0 and words in note, note

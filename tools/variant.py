@@ -172,6 +172,8 @@ def main(argv: list[str] | None = None) -> int:
             except OSError as exc:
                 raise SystemExit(f"--out {args.out}: {exc.strerror}") from None
             print(f"wrote {text.count(chr(10)) - 1} codes to {args.out}")
+            print("the student edition's answer keys hold the students of the roster it was built "
+                  "with: after new students, build it again (make release SECRET=... ROSTER=...)")
         else:
             sys.stdout.write(text)
         return 0

@@ -21,7 +21,15 @@ import numpy as np
 from course_lib.homework import answers
 
 HOMEWORK = "hw01"
-POINTS = {"q1": 2, "q2": 3, "q3": 0, "q4": 2, "q5": 2, "q6": 0, "q7": 2}  # multiple choice: feedback only
+POINTS = {
+    "q1": 2,
+    "q2": 3,
+    "q3": 0,
+    "q4": 2,
+    "q5": 2,
+    "q6": 0,
+    "q7": 2,
+}  # multiple choice: feedback only
 
 QUAD_HINT = "quad returns (value, error estimate): take the first"
 
@@ -69,7 +77,9 @@ def _right_letters_q3(d):
 
 
 def _right_letters_q6(d):
-    return ",".join(x for x, label in sorted(d["options"].items()) if any(key in label for key in INTRINSIC))
+    return ",".join(
+        x for x, label in sorted(d["options"].items()) if any(key in label for key in INTRINSIC)
+    )
 
 
 def _kappa(d):
@@ -140,6 +150,30 @@ def key_values(data):
     }
 
 
+#: the feedback's words for the mistakes of ``key_values`` (the same the checks name)
+MISTAKES = {
+    "backwards": "T points backwards: against the direction of travel",
+    "swapped": "the components of T are swapped",
+    "sign-left": "the sign of κ is wrong: the parabola turns left there",
+    "sign-right": "the sign of κ is wrong: the parabola turns right there",
+    "radius": "that is the radius of curvature, not the curvature",
+    "power": "the power of ‖q'‖ in the denominator of κ is wrong",
+    "missing-term": "a term of the chain rule is missing",
+    "at-s": "q' is evaluated at s instead of at f(s)",
+    "f1-not-squared": "f' must enter squared",
+    "original": "that is q'' of the curve before the change of variables",
+    "chord": "that is the length of the chord, not of the arc",
+}
+
+
+def _wrong(q, value, data, note):
+    """The feedback of a wrong value: the mistake it is, if it is a known one, else ``note``."""
+    for tag, known in key_values(data)[q]:
+        if tag != "right" and answers.close(value, known, tol=1e-6):
+            return f"{note}: {MISTAKES[tag]}"
+    return note
+
+
 def _composite_a(s):
     """q(x) = (sin x, x³), f(s) = s² + s/2; the derivatives of q(f(s)) differentiated by hand."""
     g, g1, g2 = s * s + s / 2, 2 * s + 0.5, 2.0
@@ -165,7 +199,9 @@ Q2_CASES = [(_composite_a, 0.7), (_composite_b, 1.3)]
 
 def q1(student, data):
     T = answers.array(student["answer_q1"], (2,), "answer_q1", "a plane vector")
-    assert answers.close(T, _unit_tangent(data["q1"])), f"T({data['q1']['t']:g}) is wrong"
+    assert answers.close(T, _unit_tangent(data["q1"])), _wrong(
+        "q1", T, data, f"T({data['q1']['t']:g}) is wrong"
+    )
 
 
 def q2(student, data):
@@ -190,12 +226,16 @@ def q3(student, data):
 
 def q4(student, data):
     kappa = answers.number(student["answer_q4"], "answer_q4")
-    assert answers.close(kappa, _kappa(data["q4"])), f"κ({data['q4']['u']:g}) is wrong"
+    assert answers.close(kappa, _kappa(data["q4"])), _wrong(
+        "q4", kappa, data, f"κ({data['q4']['u']:g}) is wrong"
+    )
 
 
 def q5(student, data):
     v = answers.array(student["answer_q5"], (2,), "answer_q5", "a plane vector")
-    assert answers.close(v, _second_derivative(data["q5"])), f"q̃''({data['q5']['s']:g}) is wrong"
+    assert answers.close(v, _second_derivative(data["q5"])), _wrong(
+        "q5", v, data, f"q̃''({data['q5']['s']:g}) is wrong"
+    )
 
 
 def q6(student, data):
@@ -205,4 +245,6 @@ def q6(student, data):
 
 def q7(student, data):
     length = answers.number(student["answer_q7"], "answer_q7", QUAD_HINT)
-    assert math.isclose(length, _arc_length(data["q7"]), rel_tol=1e-6), "the arc length is wrong"
+    assert math.isclose(length, _arc_length(data["q7"]), rel_tol=1e-6), _wrong(
+        "q7", length, data, "the arc length is wrong"
+    )

@@ -22,7 +22,15 @@ import numpy as np
 from course_lib.homework import answers
 
 HOMEWORK = "hw02"
-POINTS = {"q1": 1, "q2": 2, "q3": 3, "q4": 2, "q5": 2, "q6": 0, "q7": 0}  # multiple choice: feedback only
+POINTS = {
+    "q1": 1,
+    "q2": 2,
+    "q3": 3,
+    "q4": 2,
+    "q5": 2,
+    "q6": 0,
+    "q7": 0,
+}  # multiple choice: feedback only
 
 VARIANTS = True
 
@@ -173,14 +181,24 @@ def q4(student, data):
     if answers.expression_matches(free, values, expected.tolist(), Q4_SYMBOLS, "answer_q4"):
         return None
     if answers.expression_matches(free, values, (4 * b1 * b2 + 3 * b2**2).tolist(), Q4_SYMBOLS):
-        return 0.0, "that is seed 001 eq. (2.7) as printed (a typo), not the chain rule's coefficient"
+        return (
+            0.0,
+            "that is seed 001 eq. (2.7) as printed (a typo), not the chain rule's coefficient",
+        )
     return 0.0, "the coefficient is wrong"
 
 
 def q5(student, data):
     # default data: β1² q'' + β2 q' = 0.25 (1, -3) + 2 (2, 0) = (4.25, -0.75)
     v = answers.array(student["answer_q5"], (2,), "answer_q5", "a plane vector")
-    assert answers.close(v, _r2(data["q5"])), "r''(0) is wrong"
+    if answers.close(v, _r2(data["q5"])):
+        return None
+    notes = {"beta1-not-squared": ": β1 must enter squared", "missing-term": ": the β2 term is missing",
+             "mixed-up": ": β1² and β2 multiply the wrong derivatives"}  # fmt: skip
+    for tag, known in key_values(data)["q5"][1:]:
+        if answers.close(v, known, tol=1e-6):
+            return 0.0, "r''(0) is wrong" + notes[tag]
+    return 0.0, "r''(0) is wrong"
 
 
 def q6(student, data):
