@@ -103,12 +103,19 @@ def _rows(out: Path) -> dict[str, dict[str, str]]:
         return {r["student"]: r for r in csv.DictReader(fh)}
 
 
+#: the fixtures that type q7's arc length in as a number (answer_q7 = 1.4789428575445975): the
+#: grader flags that for the instructor ("answer typed in", tools/grading/tamper.py); points stand
+TYPED_Q7 = {"correct", "deleted_variables", "endless_loop", "fails_q1_q4", "kernel_dies", "raises"}
+
+
 @pytest.mark.parametrize("name", sorted(EXPECTED))
 def test_each_faulty_submission_gets_its_points_and_notes(fixture_run, name):
     total, notes, run_notes, status = EXPECTED[name]
     row = _rows(fixture_run["out"])[name]
     assert float(row["total"]) == total
-    assert row["status"] == status
+    typed = "answer_q7 = 1.4789428575445975" in (FIXTURES / f"{name}.ipynb").read_text(encoding="utf-8")
+    assert typed == (name in TYPED_Q7)
+    assert row["status"] == status + ("; answer typed in" if typed else "")
     feedback = (fixture_run["out"] / "feedback" / f"{name}.md").read_text(encoding="utf-8")
     assert f"**Score: {total:g} / 11**" in feedback
     for q, fragment in notes.items():

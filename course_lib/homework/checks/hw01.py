@@ -42,7 +42,6 @@ from numpy.polynomial import polynomial as P
 
 from course_lib.homework import variants
 from course_lib.homework.checks._core import (
-    ROUNDED_HINT,
     answer_hash,
     as_choice,
     as_number,
@@ -50,11 +49,10 @@ from course_lib.homework.checks._core import (
     call_answer,
     close,
     fail,
-    key_tag,
     ok,
     register,
-    typed_rounded,
 )
+from course_lib.homework.checks.keyed import ROUNDED_HINT, key_tag, typed_rounded
 
 # ============================================================ the question data: every student's variant
 # (``generate(rng)``: the data of a variant, ``generate(None)`` the default one;

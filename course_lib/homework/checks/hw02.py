@@ -40,7 +40,6 @@ import numpy as np
 
 from course_lib.homework import answers, variants
 from course_lib.homework.checks._core import (
-    ROUNDED_HINT,
     answer_hash,
     as_choice,
     as_number,
@@ -49,11 +48,10 @@ from course_lib.homework.checks._core import (
     close,
     expression_digest,
     fail,
-    key_tag,
     ok,
     register,
-    typed_rounded,
 )
+from course_lib.homework.checks.keyed import ROUNDED_HINT, key_tag, typed_rounded
 
 # ============================================================ the question data: every student's variant
 # (``generate(rng)``: the data of a variant, ``generate(None)`` the default one;
