@@ -19,7 +19,6 @@ The state (:class:`TangentPlaneState`) needs no browser: ``demo.state.set_param(
 from __future__ import annotations
 
 import html
-from collections.abc import Callable
 
 import numpy as np
 
@@ -30,7 +29,7 @@ from course_lib.constructions.surfaces import (
 )
 from course_lib.widgets.assembly import Demo, resolve_static
 from course_lib.widgets.report import NOISE, live_html, warning_paragraph
-from course_lib.widgets.state import SliderSpec
+from course_lib.widgets.state import DrawnState, SliderSpec
 from course_lib.widgets.view import make_figure
 
 __all__ = ["PATCH_SLIDERS", "TangentPlaneState", "TangentPlaneView", "tangent_plane_demo"]
@@ -57,7 +56,7 @@ def _hill() -> tuple[BezierPatch, np.ndarray]:
     return F, F.control_net[3] + np.array(_SHIFT)
 
 
-class TangentPlaneState:
+class TangentPlaneState(DrawnState):
     """Two patches ``F``, ``G`` along ``F(1, v) = G(0, v)`` and their tangent-plane report.
 
     Parameters
@@ -95,8 +94,7 @@ class TangentPlaneState:
             spec.check(self.params[name])  # never clamped by a slider
             self.params[name] = float(self.params[name])
         self.warning = ""
-        self.view = None
-        self.listeners: list[Callable] = []
+        super().__init__()
         self.compute()
 
     # ---------------------------------------------------------------- changes
@@ -130,13 +128,6 @@ class TangentPlaneState:
         except ValueError as exc:  # G not regular on the boundary: no normal there
             self.report = None
             self.warning = str(exc)
-
-    def update(self) -> None:
-        self.compute()
-        if self.view is not None:
-            self.view.draw(self)
-        for f in self.listeners:
-            f(self)
 
     @property
     def g1(self) -> bool:

@@ -16,7 +16,7 @@ import numpy as np
 from course_lib.validation import as_points, check_finite_scalar
 from course_lib.widgets.assembly import Demo, resolve_static
 from course_lib.widgets.report import warning_paragraph
-from course_lib.widgets.state import SliderSpec
+from course_lib.widgets.state import DrawnState, SliderSpec
 from course_lib.widgets.view import BlitView, fit_equal_limits, make_figure
 
 __all__ = ["ReparametrizationState", "reparametrization_demo"]
@@ -27,7 +27,7 @@ A_SLIDER = SliderSpec("a", "a", -0.9, 0.9, 0.01, "cl-slider-shape", per_joint=Fa
 V_SLIDER = SliderSpec("v", "v", 0.0, 1.0, 0.0025, "cl-slider-t", per_joint=False)
 
 
-class ReparametrizationState:
+class ReparametrizationState(DrawnState):
     """State of :func:`reparametrization_demo`: control points, ``a`` (shape of ``f``), ``v``.
 
     Raises
@@ -49,8 +49,7 @@ class ReparametrizationState:
         self.a = check_finite_scalar(a, "a")
         self.f = self._change(self.a)
         self.warning = ""
-        self.view = None
-        self.listeners: list = []
+        super().__init__()
         self.compute()
 
     @staticmethod
@@ -98,13 +97,6 @@ class ReparametrizationState:
         except ValueError as exc:
             self.facts = {}
             self.warning = str(exc)
-
-    def update(self) -> None:
-        self.compute()
-        if self.view is not None:
-            self.view.draw(self)
-        for f in self.listeners:
-            f(self)
 
     def report_html(self) -> str:
         if self.warning:

@@ -23,7 +23,7 @@ from course_lib.geometry.continuity import joint_report
 from course_lib.validation import as_points, check_finite_scalar, check_integer
 from course_lib.widgets.report import warning_paragraph
 
-__all__ = ["CurveDemoState", "SliderSpec"]
+__all__ = ["CurveDemoState", "DrawnState", "SliderSpec"]
 
 
 @dataclass(frozen=True)
@@ -58,7 +58,32 @@ class SliderSpec:
             )
 
 
-class CurveDemoState:
+class DrawnState:
+    """What every demo state shares: the view drawing it (set by the view) and the listeners
+    told after each change.  :meth:`update` recomputes (the subclass's ``compute``), redraws,
+    then tells the listeners."""
+
+    def __init__(self) -> None:
+        self.view = None  #: the view drawing this state, if any (it sets itself)
+        self.listeners: list[Callable] = []
+
+    def compute(self) -> None:  # pragma: no cover - every state defines its own
+        raise NotImplementedError
+
+    def notify(self) -> None:
+        """Tell the listeners (the live report, the screen reader's region) of the new state."""
+        for f in self.listeners:
+            f(self)
+
+    def update(self) -> None:
+        """Recompute, redraw the view (if any), then notify the listeners."""
+        self.compute()
+        if self.view is not None:
+            self.view.draw(self)
+        self.notify()
+
+
+class CurveDemoState(DrawnState):
     """The state of a curve demo and what follows from it.
 
     Parameters
@@ -131,8 +156,7 @@ class CurveDemoState:
             raise ValueError(f"t must lie in the curve's domain [{a:g}, {b:g}]; got {self.t:g}")
         self.report = None
         self.warning = ""
-        self.view = None  #: the CurveDemoView drawing this state, if any (it sets itself)
-        self.listeners: list[Callable[[CurveDemoState], None]] = []
+        super().__init__()
         self.compute()
 
     # ---------------------------------------------------------------- helpers
@@ -205,8 +229,7 @@ class CurveDemoState:
     def set_details(self, value: bool) -> None:
         """Show or hide the report's details (no recomputation, no redraw)."""
         self.show_details = bool(value)
-        for f in self.listeners:
-            f(self)
+        self.notify()
 
     def drag(self, k: int, x: float, y: float) -> None:
         """Move design point ``k`` to ``(x, y)`` and update.  Never raises on geometry:
@@ -254,8 +277,7 @@ class CurveDemoState:
         if self.view is not None:
             self.view.draw(self)
         self.compute_report()
-        for f in self.listeners:
-            f(self)
+        self.notify()
 
     def report_html(self) -> str:
         """The live report: the selected joint's continuity, then any warning."""
