@@ -474,19 +474,25 @@ def _wrong_answer(hw: str, qid: str):
     return np.full(np.shape(right), 0.123) if np.ndim(right) else 0.123
 
 
-@pytest.mark.parametrize("kind", ["settrace", "setprofile"])
-@pytest.mark.parametrize("hw, qid", _value_questions())
-def test_a_tracer_around_the_check_recovers_no_expected_value(hw, qid, kind):
+def _under_spy(kind: str, run):
+    """``run()`` with a :class:`Spy` installed by ``sys.settrace`` or ``sys.setprofile``:
+    ``(its result, the spy)``; the spy is removed whatever happens."""
     import sys
 
     spy = Spy()
-    wrong = _wrong_answer(hw, qid)  # made before the tracer: it holds the right answer's shape
     install = sys.settrace if kind == "settrace" else sys.setprofile
     install(spy)
     try:
-        verdict = check(qid, wrong)
+        return run(), spy
     finally:
         install(None)
+
+
+@pytest.mark.parametrize("kind", ["settrace", "setprofile"])
+@pytest.mark.parametrize("hw, qid", _value_questions())
+def test_a_tracer_around_the_check_recovers_no_expected_value(hw, qid, kind):
+    wrong = _wrong_answer(hw, qid)  # made before the tracer: it holds the right answer's shape
+    verdict, spy = _under_spy(kind, lambda: check(qid, wrong))
     assert not verdict.passed and "do not run under a tracer" in verdict.message
     for x in _expected_numbers(hw, qid):
         assert not any(abs(x - s) <= 1e-9 * max(1.0, abs(x)) for s in spy.seen), (qid, x)
@@ -512,8 +518,6 @@ def test_a_spy_finds_no_expected_value_even_where_the_check_lets_it_run(
 ):
     """With the refusal of tracers switched off (as a student can, in their own kernel), a spy
     on every frame of an answer-keyed check sees no expected value: the check holds digests."""
-    import sys
-
     monkeypatch.setattr("course_lib.homework.checks._core._gettrace", lambda: None)
     monkeypatch.setattr("course_lib.homework.checks._core._getprofile", lambda: None)
     data = variants.data(hw, HOME_CODES[hw][7])  # another student's data: keys of the test roster
@@ -523,13 +527,9 @@ def test_a_spy_finds_no_expected_value_even_where_the_check_lets_it_run(
     value = np.full(np.shape(kept.right), 0.123) if answer == "wrong" else kept.right
     if qid == "hw01.q1" and answer == "wrong":
         value = np.array([0.6, 0.8])  # a unit vector: the check gets as far as the key
-    spy = Spy()
-    install = sys.settrace if kind == "settrace" else sys.setprofile
-    install(spy)
     try:
-        verdict = check(qid, value)
+        verdict, spy = _under_spy(kind, lambda: check(qid, value))
     finally:
-        install(None)
         variants.data(hw, variants.DEFAULT)
     assert verdict.passed == (answer == "right"), verdict
     if answer == "right":
@@ -546,7 +546,6 @@ def test_a_spy_finds_no_expected_value_even_where_the_check_lets_it_run(
 def test_the_spy_test_can_fail(monkeypatch):
     """The same spy finds the arc length in a check that computes it (hw01.q7 as it was)."""
     import math
-    import sys
 
     from course_lib.homework.checks import _core
 
@@ -557,12 +556,7 @@ def test_the_spy_test_can_fail(monkeypatch):
         return math.isclose(answer, expected, rel_tol=1e-6), ""
 
     monkeypatch.setattr(_core, "_gettrace", lambda: None)
-    spy = Spy()
-    sys.settrace(spy)
-    try:
-        _core.run_validate("hw01.q7", computing_check, 0.123)
-    finally:
-        sys.settrace(None)
+    _, spy = _under_spy("settrace", lambda: _core.run_validate("hw01.q7", computing_check, 0.123))
     (x,) = _expected_numbers("hw01", "hw01.q7")
     assert any(abs(x - s) <= 1e-9 * abs(x) for s in spy.seen)
 
