@@ -35,6 +35,8 @@ import sys
 import time
 import urllib.error
 import urllib.request
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 from urllib.parse import urlsplit
 
@@ -325,6 +327,21 @@ class Server:
         ARTIFACTS.mkdir(exist_ok=True)
         if self.log_path.exists():
             shutil.copy2(self.log_path, ARTIFACTS / name)
+
+    @contextmanager
+    def serving(self, log_name: str, what: str) -> Iterator[Server]:
+        """The server for the block; then stopped and its log kept as ``log_name`` whatever
+        happens, and, when the block ended normally, a test failure if ``what`` left processes
+        behind."""
+        import pytest
+
+        try:
+            yield self
+        finally:
+            self.stop()
+            self.save_log(log_name)
+        if self.leftovers:
+            pytest.fail(f"processes left by {what}: {self.leftovers}")
 
 
 def make_server(kind: str, tmp_path_factory, notebooks: list[Path]) -> Server:

@@ -211,15 +211,10 @@ def plain_voila(chromium_path, tmp_path_factory):
     if importlib.util.find_spec("voila") is None:
         pytest.skip("plain Voilà untested: voila is not installed")
     server = make_server("voila", tmp_path_factory, [PLAIN])
-    try:
+    with server.serving("voila-keyboard-server.log", "the plain Voilà test"):
         server.launch(server.voila_command(PLAIN.name))
         server.wait_ready()
         yield server
-    finally:
-        server.stop()
-        server.save_log("voila-keyboard-server.log")
-    if server.leftovers:
-        pytest.fail(f"processes left by the plain Voilà test: {server.leftovers}")
 
 
 @pytest.mark.timeout(1800)

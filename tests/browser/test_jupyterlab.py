@@ -236,14 +236,9 @@ def voila_server(chromium_path, tmp_path_factory):
         yield None
         return
     server = make_server("voila", tmp_path_factory, [NOTEBOOK])
-    try:
+    with server.serving("voila-server.log", "the Voilà test"):
         server.launch(server.voila_command(NOTEBOOK.name))
         yield server
-    finally:
-        server.stop()
-        server.save_log("voila-server.log")
-    if server.leftovers:
-        pytest.fail(f"processes left by the Voilà test: {server.leftovers}")
 
 
 @pytest.fixture(scope="class")
@@ -256,36 +251,33 @@ def lab(request, chromium_path, voila_server, tmp_path_factory):
     context = None
     timings: dict[str, float] = {}
     t0 = time.monotonic()
-    try:
-        server.launch(server.lab_command())
-        browser = request.getfixturevalue("chromium_browser")  # starts while the server does
-        server.wait_ready()
-        timings["server start"] = time.monotonic() - t0
-        t = time.monotonic()
-        server.start_kernel_for(NOTEBOOK.name)  # boots while the page loads
-        timings["session created"] = time.monotonic() - t
-        context, page, log = new_page(browser)
-        t = time.monotonic()
-        # no ?reset: the course's default layout (make lab's), table of contents open
-        page.goto(f"{server.url}/lab/tree/{NOTEBOOK.name}?token={server.token}")
-        # the status bar, not the execution indicator, tells when the kernel is really up
-        expect(page.locator("#jp-main-statusbar")).to_contain_text(
-            "| Idle", timeout=KERNEL_TIMEOUT_MS
-        )
-        timings["open until kernel idle"] = time.monotonic() - t
-        t = time.monotonic()
-        page.locator(".lm-MenuBar-item", has_text="Run").click()
-        page.locator('.lm-Menu-item[data-command="runmenu:run-all"]').click()
-        state = page.wait_for_function(RUN_STATE_JS, polling=250, timeout=RUN_ALL_TIMEOUT_MS)
-        timings["run all cells"] = time.monotonic() - t
-        yield Session(server, page, log, timings, state.json_value())
-    finally:
-        if context is not None:
-            context.close()
-        server.stop()
-        server.save_log("jupyterlab-server.log")
-    if server.leftovers:
-        pytest.fail(f"processes left by the JupyterLab test: {server.leftovers}")
+    with server.serving("jupyterlab-server.log", "the JupyterLab test"):
+        try:
+            server.launch(server.lab_command())
+            browser = request.getfixturevalue("chromium_browser")  # starts while the server does
+            server.wait_ready()
+            timings["server start"] = time.monotonic() - t0
+            t = time.monotonic()
+            server.start_kernel_for(NOTEBOOK.name)  # boots while the page loads
+            timings["session created"] = time.monotonic() - t
+            context, page, log = new_page(browser)
+            t = time.monotonic()
+            # no ?reset: the course's default layout (make lab's), table of contents open
+            page.goto(f"{server.url}/lab/tree/{NOTEBOOK.name}?token={server.token}")
+            # the status bar, not the execution indicator, tells when the kernel is really up
+            expect(page.locator("#jp-main-statusbar")).to_contain_text(
+                "| Idle", timeout=KERNEL_TIMEOUT_MS
+            )
+            timings["open until kernel idle"] = time.monotonic() - t
+            t = time.monotonic()
+            page.locator(".lm-MenuBar-item", has_text="Run").click()
+            page.locator('.lm-Menu-item[data-command="runmenu:run-all"]').click()
+            state = page.wait_for_function(RUN_STATE_JS, polling=250, timeout=RUN_ALL_TIMEOUT_MS)
+            timings["run all cells"] = time.monotonic() - t
+            yield Session(server, page, log, timings, state.json_value())
+        finally:
+            if context is not None:
+                context.close()
 
 
 @pytest.mark.timeout(1800)

@@ -76,16 +76,11 @@ def deck_server(chromium_path, tmp_path_factory):
     server.proc = subprocess.Popen(cmd, cwd=server.root, env=env, stdout=server._log,
                                    stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
                                    start_new_session=True)
-    try:
+    with server.serving("lecture-deck-voila.log", "the lecture-mode test"):
         ok = present.wait_preheated(server.root / present.READY, server.proc, timeout=WAIT_S)
         assert ok, f"the pre-heated kernel did not execute the deck:\n{server.log_tail()}"
         server.preheat_s = time.monotonic() - t0
         yield server
-    finally:
-        server.stop()
-        server.save_log("lecture-deck-voila.log")
-    if server.leftovers:
-        pytest.fail(f"processes left by the lecture-mode test: {server.leftovers}")
 
 
 @pytest.mark.timeout(1800)  # a hang guard: waits are WAIT_S each
