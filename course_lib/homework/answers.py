@@ -44,7 +44,7 @@ from __future__ import annotations
 import json
 import math
 import re
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -65,6 +65,7 @@ __all__ = [
     "expression_matches",
     "is_unanswered",
     "items",
+    "known_mistake",
     "number",
     "partial_credit",
     "plain",
@@ -417,6 +418,16 @@ def close(a: object, b: object, tol: float = 1e-9) -> bool:
         return False
     scale = max(1.0, float(np.abs(b).max(initial=0.0)))
     return bool(np.allclose(a, b, rtol=tol, atol=tol * scale))
+
+
+def known_mistake(value: object, known: Sequence, words: Mapping[str, str], note: str) -> str:
+    """``note``, followed by the words of the first known mistake ``value`` is (``known``: the
+    ``(tag, value)`` pairs of a hidden test's ``key_values``; the tag ``"right"`` is skipped),
+    so the grade's feedback names the mistake the check named."""
+    for tag, mistake in known:
+        if tag != "right" and close(value, mistake, tol=1e-6):
+            return f"{note}: {words[tag]}"
+    return note
 
 
 def partial_credit(cases: Sequence) -> tuple[float, str]:

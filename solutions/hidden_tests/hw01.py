@@ -167,11 +167,8 @@ MISTAKES = {
 
 
 def _wrong(q, value, data, note):
-    """The feedback of a wrong value: the mistake it is, if it is a known one, else ``note``."""
-    for tag, known in key_values(data)[q]:
-        if tag != "right" and answers.close(value, known, tol=1e-6):
-            return f"{note}: {MISTAKES[tag]}"
-    return note
+    """The feedback of a wrong value: ``note``, and the mistake it is if it is a known one."""
+    return answers.known_mistake(value, key_values(data)[q], MISTAKES, note)
 
 
 def _composite_a(s):

@@ -188,17 +188,20 @@ def q4(student, data):
     return 0.0, "the coefficient is wrong"
 
 
+#: the feedback's words for q5's mistakes of ``key_values`` (the same the check names)
+Q5_MISTAKES = {
+    "beta1-not-squared": "β1 must enter squared",
+    "missing-term": "the β2 term is missing",
+    "mixed-up": "β1² and β2 multiply the wrong derivatives",
+}
+
+
 def q5(student, data):
     # default data: β1² q'' + β2 q' = 0.25 (1, -3) + 2 (2, 0) = (4.25, -0.75)
     v = answers.array(student["answer_q5"], (2,), "answer_q5", "a plane vector")
-    if answers.close(v, _r2(data["q5"])):
-        return None
-    notes = {"beta1-not-squared": ": β1 must enter squared", "missing-term": ": the β2 term is missing",
-             "mixed-up": ": β1² and β2 multiply the wrong derivatives"}  # fmt: skip
-    for tag, known in key_values(data)["q5"][1:]:
-        if answers.close(v, known, tol=1e-6):
-            return 0.0, "r''(0) is wrong" + notes[tag]
-    return 0.0, "r''(0) is wrong"
+    assert answers.close(v, _r2(data["q5"])), answers.known_mistake(
+        v, key_values(data)["q5"], Q5_MISTAKES, "r''(0) is wrong"
+    )
 
 
 def q6(student, data):
